@@ -1,0 +1,61 @@
+#include "flecsi_lite/runtime/runtime.hh"
+
+#include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/runtime/log.hh"
+#include "flecsi_lite/runtime/timers.hh"
+
+#include <Kokkos_Core.hpp>
+
+#include <iostream>
+
+namespace flecsi_lite::runtime {
+namespace {
+settings global_settings;
+MPI_Comm framework_comm = MPI_COMM_NULL;
+} // namespace
+
+const settings& current_settings() { return global_settings; }
+
+runtime::runtime(int& argc, char**& argv, options program_options)
+  : options_(std::move(program_options)) {
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  MPI_Comm_dup(MPI_COMM_WORLD, &framework_comm);
+  detail::set_communicator(framework_comm);
+  Kokkos::initialize(argc, argv);  // removes the --kokkos-* arguments it recognizes
+
+  std::string program = argc > 0 ? argv[0] : "program";
+  global_settings.program = program.substr(program.find_last_of('/') + 1);
+  options_.flag("help", "print this help and exit")
+    .flag("control-model", "write the control model as a Graphviz file <program>-control-model.dot and exit")
+    .flag("log-all-ranks", "every rank logs, each line prefixed by its rank (default: rank 0 only)")
+    .value("trace", "FILE", "record every task launch, ghost copy and reduction of the executor to FILE")
+    .flag("no-timers", "do not print the timer summary at exit");
+  try {
+    options_.parse(argc, argv);
+  } catch (const options_error& e) {
+    if (rank() == 0) std::cerr << global_settings.program << ": " << e.what() << "\n";
+    exit_code_ = 2;
+    return;
+  }
+  if (options_.has("help")) {
+    if (rank() == 0) std::cout << options_.help(global_settings.program);
+    exit_code_ = 0;
+    return;
+  }
+  log::set_all_ranks(options_.has("log-all-ranks"));
+  if (options_.has("control-model"))
+    global_settings.control_model_file = global_settings.program + "-control-model.dot";
+  global_settings.trace_file = options_.get("trace");
+  global_settings.timers = !options_.has("no-timers");
+}
+
+runtime::~runtime() {
+  if (proceed() && global_settings.timers) timers::report(std::cout);
+  Kokkos::finalize();
+  detail::set_communicator(MPI_COMM_NULL);
+  MPI_Comm_free(&framework_comm);
+  MPI_Finalize();
+}
+
+} // namespace flecsi_lite::runtime

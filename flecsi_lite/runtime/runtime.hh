@@ -1,0 +1,43 @@
+// The runtime of a flecsi_lite program: initializes MPI then Kokkos, parses the command line,
+// and at the end prints the timer summary and finalizes Kokkos then MPI.
+//
+//   int main(int argc, char** argv) {
+//     flecsi_lite::runtime::runtime rt(argc, argv, my_options);
+//     if (!rt.proceed()) return rt.exit_code();   // --help, or a bad option
+//     ...
+//   }
+#pragma once
+
+#include "flecsi_lite/runtime/options.hh"
+
+#include <string>
+
+namespace flecsi_lite::runtime {
+
+/// Settings every flecsi_lite program understands (see runtime::standard_options).
+struct settings {
+  std::string program;             // argv[0] without directories
+  std::string control_model_file;  // non-empty: write the control model as Graphviz and stop
+  std::string trace_file;          // non-empty: the executor records a trace there
+  bool timers = true;              // print the timer summary at exit
+};
+const settings& current_settings();
+
+class runtime {
+public:
+  runtime(int& argc, char**& argv, options program_options = options{});
+  runtime(const runtime&) = delete;
+  runtime& operator=(const runtime&) = delete;
+  ~runtime();
+
+  /// False after --help or a bad option: main should return exit_code().
+  bool proceed() const { return exit_code_ < 0; }
+  int exit_code() const { return exit_code_ < 0 ? 0 : exit_code_; }
+  const options& opts() const { return options_; }
+
+private:
+  options options_;
+  int exit_code_ = -1;
+};
+
+} // namespace flecsi_lite::runtime
