@@ -7,14 +7,18 @@
 #include <Kokkos_Core.hpp>
 
 #include <iostream>
+#include <vector>
 
 namespace flecsi_lite::runtime {
 namespace {
 settings global_settings;
 MPI_Comm framework_comm = MPI_COMM_NULL;
+std::vector<std::function<void()>> finalizers;
 } // namespace
 
 const settings& current_settings() { return global_settings; }
+
+void at_finalize(std::function<void()> action) { finalizers.push_back(std::move(action)); }
 
 runtime::runtime(int& argc, char**& argv, options program_options)
   : options_(std::move(program_options)) {
@@ -51,6 +55,8 @@ runtime::runtime(int& argc, char**& argv, options program_options)
 }
 
 runtime::~runtime() {
+  for (auto it = finalizers.rbegin(); it != finalizers.rend(); ++it) (*it)();
+  finalizers.clear();
   if (proceed() && global_settings.timers) timers::report(std::cout);
   Kokkos::finalize();
   detail::set_communicator(MPI_COMM_NULL);

@@ -10,6 +10,7 @@
 
 #include "flecsi_lite/runtime/options.hh"
 
+#include <functional>
 #include <string>
 
 namespace flecsi_lite::runtime {
@@ -22,6 +23,9 @@ struct settings {
   bool timers = true;              // print the timer summary at exit
 };
 const settings& current_settings();
+
+/// Registers work to do when the runtime ends, before Kokkos and MPI finalize (last first).
+void at_finalize(std::function<void()> action);
 
 class runtime {
 public:

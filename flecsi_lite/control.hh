@@ -1,0 +1,3 @@
+// The control model (control points, actions, dependencies, cycles).
+#pragma once
+#include "flecsi_lite/control/control_model.hh"

@@ -1,0 +1,132 @@
+#include "flecsi_lite/control/control_model.hh"
+
+#include <algorithm>
+#include <ostream>
+
+namespace flecsi_lite::control::detail {
+
+std::size_t model_structure::find_point(const std::string& name) const {
+  for (std::size_t p = 0; p < points_.size(); ++p)
+    if (points_[p].name == name) return p;
+  std::string known;
+  for (auto& p : points_) known += (known.empty() ? "" : ", ") + p.name;
+  throw control_error("unknown control point '" + name + "' (control points: " + known + ")");
+}
+
+std::size_t model_structure::add_point(const std::string& name, std::size_t cycle) {
+  for (auto& p : points_)
+    if (p.name == name) throw control_error("control point '" + name + "' declared twice");
+  points_.push_back({name, {}, cycle});
+  return points_.size() - 1;
+}
+
+std::size_t model_structure::add_cycle(const std::string& name, const std::vector<std::string>& names) {
+  if (names.empty()) throw control_error("cycle '" + name + "' has no control points");
+  const std::size_t c = cycles_.size();
+  cycles_.push_back({name, points_.size(), points_.size() + names.size() - 1});
+  for (auto& n : names) add_point(n, c);
+  return c;
+}
+
+action_handle model_structure::add_action(const std::string& point, const std::string& name) {
+  const std::size_t p = find_point(point);
+  for (auto& a : points_[p].actions)
+    if (a.name == name)
+      throw control_error("action '" + name + "' registered twice on control point '" + point + "'");
+  points_[p].actions.push_back({name, {}});
+  return {p, points_[p].actions.size() - 1};
+}
+
+void model_structure::add_dependency(action_handle later, action_handle earlier) {
+  if (later.point != earlier.point)
+    throw control_error("action '" + points_[later.point].actions[later.index].name + "' (" +
+                        points_[later.point].name + ") cannot depend on action '" +
+                        points_[earlier.point].actions[earlier.index].name + "' of another control point (" +
+                        points_[earlier.point].name + ")");
+  points_[later.point].actions[later.index].after.push_back(earlier.index);
+}
+
+std::vector<std::size_t> model_structure::order(std::size_t point) const {
+  // Kahn's algorithm, always taking the earliest-registered ready action.
+  const auto& actions = points_[point].actions;
+  const std::size_t n = actions.size();
+  std::vector<std::size_t> waiting_on(n, 0);
+  std::vector<std::vector<std::size_t>> successors(n);
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b : actions[a].after) {
+      ++waiting_on[a];
+      successors[b].push_back(a);
+    }
+  std::vector<std::size_t> result;
+  std::vector<bool> done(n, false);
+  while (result.size() < n) {
+    std::size_t next = n;
+    for (std::size_t a = 0; a < n && next == n; ++a)
+      if (!done[a] && waiting_on[a] == 0) next = a;
+    if (next == n) {
+      // Every remaining action waits on another: follow "waits on" links to exhibit a cycle.
+      std::size_t a = 0;
+      while (done[a]) ++a;
+      std::vector<std::size_t> path;
+      std::vector<int> seen(n, -1);
+      while (seen[a] < 0) {
+        seen[a] = static_cast<int>(path.size());
+        path.push_back(a);
+        for (std::size_t b : actions[a].after)
+          if (!done[b]) {
+            a = b;
+            break;
+          }
+      }
+      std::string chain;
+      for (std::size_t i = seen[a]; i < path.size(); ++i) chain += actions[path[i]].name + " -> ";
+      chain += actions[a].name;
+      throw control_error("dependency cycle among the actions of control point '" + points_[point].name +
+                          "': " + chain + " (each waits on the next)");
+    }
+    done[next] = true;
+    result.push_back(next);
+    for (std::size_t s : successors[next]) --waiting_on[s];
+  }
+  return result;
+}
+
+void model_structure::validate() const {
+  for (std::size_t p = 0; p < points_.size(); ++p) order(p);
+}
+
+void model_structure::write_graphviz(std::ostream& out, const std::string& title) const {
+  out << "digraph control_model {\n  label=\"" << title << "\";\n  compound=true;\n  rankdir=TB;\n"
+      << "  node [shape=box, style=rounded];\n";
+  std::size_t open_cycle = npos;
+  for (std::size_t p = 0; p < points_.size(); ++p) {
+    const auto& point = points_[p];
+    if (point.cycle != open_cycle && open_cycle != npos) {
+      out << "  }\n";
+      open_cycle = npos;
+    }
+    if (point.cycle != npos && point.cycle != open_cycle) {
+      open_cycle = point.cycle;
+      out << "  subgraph cluster_cycle_" << open_cycle << " {\n    label=\"cycle: " << cycles_[open_cycle].name
+          << "\";\n    style=dashed;\n";
+    }
+    out << "  subgraph cluster_point_" << p << " {\n    label=\"" << point.name << "\";\n    style=filled;"
+        << " fillcolor=\"#eef3fb\";\n    p" << p << " [shape=point, style=invis];\n";
+    for (std::size_t a = 0; a < point.actions.size(); ++a)
+      out << "    p" << p << "a" << a << " [label=\"" << point.actions[a].name << "\"];\n";
+    for (std::size_t a = 0; a < point.actions.size(); ++a)
+      for (std::size_t b : point.actions[a].after) out << "    p" << p << "a" << b << " -> p" << p << "a" << a << ";\n";
+    out << "  }\n";
+  }
+  if (open_cycle != npos) out << "  }\n";
+  // Control flow between points, and the back edge of each cycle.
+  for (std::size_t p = 0; p + 1 < points_.size(); ++p)
+    out << "  p" << p << " -> p" << p + 1 << " [ltail=cluster_point_" << p << ", lhead=cluster_point_" << p + 1
+        << ", color=\"#1f77b4\", penwidth=2];\n";
+  for (const auto& c : cycles_)
+    out << "  p" << c.last_point << " -> p" << c.first_point << " [ltail=cluster_point_" << c.last_point
+        << ", lhead=cluster_point_" << c.first_point << ", color=\"#d62728\", style=dashed, label=\"repeat\"];\n";
+  out << "}\n";
+}
+
+} // namespace flecsi_lite::control::detail

@@ -1,0 +1,168 @@
+// The control model: a program is a sequence of CONTROL POINTS (e.g. initialize, advance,
+// analyze, finalize), some of them grouped in a CYCLE repeated while a predicate holds. At each
+// point run the ACTIONS registered on it, in an order that respects the declared DEPENDENCIES
+// between actions of that point (topological sort; ties broken by registration order). A
+// dependency cycle is an error at start-up that names the actions involved.
+//
+//   control_model<state> m;
+//   m.point("initialize").cycle("main", {"advance", "analyze"}, [](state& s) { return s.step < 10; })
+//    .point("finalize");
+//   auto density = m.action("advance", "density", compute_density);
+//   auto forces = m.action("advance", "forces", compute_forces);
+//   m.depends(forces, density);   // forces after density
+//   return m.run(s);
+#pragma once
+
+#include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/runtime/runtime.hh"
+
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace flecsi_lite::control {
+
+struct control_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Identifies an action: its control point and its index there.
+struct action_handle {
+  std::size_t point;
+  std::size_t index;
+};
+
+namespace detail {
+/// The part of the model that does not depend on the state type.
+class model_structure {
+public:
+  struct action_info {
+    std::string name;
+    std::vector<std::size_t> after;  // indices of actions of the same point
+  };
+  struct point_info {
+    std::string name;
+    std::vector<action_info> actions;
+    std::size_t cycle = npos;  // index into cycles_, or npos
+  };
+  struct cycle_info {
+    std::string name;
+    std::size_t first_point, last_point;  // inclusive range of points
+  };
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+
+  std::size_t add_point(const std::string& name, std::size_t cycle = npos);
+  std::size_t add_cycle(const std::string& name, const std::vector<std::string>& points);
+  action_handle add_action(const std::string& point, const std::string& name);
+  void add_dependency(action_handle later, action_handle earlier);
+
+  /// Actions of a point in execution order; throws control_error naming a dependency cycle.
+  std::vector<std::size_t> order(std::size_t point) const;
+  /// Checks every point (cycles among actions, empty cycles).
+  void validate() const;
+  void write_graphviz(std::ostream& out, const std::string& title) const;
+
+  const std::vector<point_info>& points() const { return points_; }
+  const std::vector<cycle_info>& cycles() const { return cycles_; }
+  std::size_t find_point(const std::string& name) const;
+
+private:
+  std::vector<point_info> points_;
+  std::vector<cycle_info> cycles_;
+};
+} // namespace detail
+
+template<class State>
+class control_model {
+public:
+  using action_function = std::function<void(State&)>;
+  using predicate = std::function<bool(const State&)>;
+
+  control_model& point(const std::string& name) {
+    structure_.add_point(name);
+    return *this;
+  }
+  /// A cycle of consecutive points, repeated while `keep_going(state)` holds (tested before
+  /// each iteration).
+  control_model& cycle(const std::string& name, const std::vector<std::string>& points, predicate keep_going) {
+    structure_.add_cycle(name, points);
+    predicates_.push_back(std::move(keep_going));
+    return *this;
+  }
+
+  action_handle action(const std::string& point, const std::string& name, action_function f) {
+    const action_handle h = structure_.add_action(point, name);
+    if (functions_.size() <= h.point) functions_.resize(h.point + 1);
+    functions_[h.point].push_back(std::move(f));
+    return h;
+  }
+  /// `later` runs after `earlier`; both must belong to the same control point.
+  control_model& depends(action_handle later, action_handle earlier) {
+    structure_.add_dependency(later, earlier);
+    return *this;
+  }
+
+  /// Execution order of the actions of `point`, by name.
+  std::vector<std::string> order(const std::string& point) const {
+    const std::size_t p = structure_.find_point(point);
+    std::vector<std::string> names;
+    for (std::size_t a : structure_.order(p)) names.push_back(structure_.points()[p].actions[a].name);
+    return names;
+  }
+  void write_graphviz(std::ostream& out, const std::string& title = "control model") const {
+    structure_.write_graphviz(out, title);
+  }
+
+  /// What a program's main calls: with --control-model, rank 0 writes the model as Graphviz
+  /// (<program>-control-model.dot) and nothing runs; otherwise run(state). Returns an exit code.
+  int execute(State& state) const {
+    const auto& settings = runtime::current_settings();
+    if (settings.control_model_file.empty()) {
+      run(state);
+      return 0;
+    }
+    structure_.validate();
+    if (runtime::rank() == 0) {
+      std::ofstream out(settings.control_model_file);
+      write_graphviz(out, settings.program);
+      if (!out) throw control_error("cannot write " + settings.control_model_file);
+      std::cout << "control model written to " << settings.control_model_file
+                << " (render: dot -Tpng " << settings.control_model_file << " -o model.png)\n";
+    }
+    return 0;
+  }
+
+  /// Validates the whole model, then runs it on `state`.
+  void run(State& state) const {
+    structure_.validate();
+    std::vector<std::vector<std::size_t>> orders;
+    for (std::size_t p = 0; p < structure_.points().size(); ++p) orders.push_back(structure_.order(p));
+    const auto& points = structure_.points();
+    for (std::size_t p = 0; p < points.size();) {
+      if (points[p].cycle == detail::model_structure::npos) {
+        run_point(p, orders[p], state);
+        ++p;
+        continue;
+      }
+      const auto& c = structure_.cycles()[points[p].cycle];
+      while (predicates_[points[p].cycle](state))
+        for (std::size_t q = c.first_point; q <= c.last_point; ++q) run_point(q, orders[q], state);
+      p = c.last_point + 1;
+    }
+  }
+
+private:
+  void run_point(std::size_t p, const std::vector<std::size_t>& order, State& state) const {
+    if (p >= functions_.size()) return;
+    for (std::size_t a : order) functions_[p][a](state);
+  }
+
+  detail::model_structure structure_;
+  std::vector<predicate> predicates_;
+  std::vector<std::vector<action_function>> functions_;
+};
+
+} // namespace flecsi_lite::control

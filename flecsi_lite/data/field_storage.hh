@@ -1,0 +1,81 @@
+// Storage of one field on one topology instance: a Kokkos view of owned entities followed by
+// ghost entities (Structure of Arrays: one view per field). The type-erased interface lets the
+// framework resize, reorder, pack and unpack every field without knowing its type.
+#pragma once
+
+#include "flecsi_lite/util/kokkos.hh"
+
+#include <cstddef>
+#include <cstring>
+#include <string>
+#include <type_traits>
+#include <typeinfo>
+#include <vector>
+
+namespace flecsi_lite::data {
+
+class field_storage_base {
+public:
+  explicit field_storage_base(std::string name) : name_(std::move(name)) {}
+  virtual ~field_storage_base() = default;
+
+  const std::string& name() const { return name_; }
+  virtual std::size_t element_size() const = 0;
+  virtual const std::type_info& element_type() const = 0;
+  virtual std::size_t size() const = 0;
+
+  /// New size; the first min(old, new) elements keep their values, new ones are value-initialized.
+  virtual void resize(std::size_t n) = 0;
+  /// new[i] = old[order[i]] for i < order.size(); the size becomes order.size() + keep_tail
+  /// where the last keep_tail elements are left value-initialized (room for ghosts).
+  virtual void gather(const std::vector<std::size_t>& order, std::size_t tail) = 0;
+  /// Copies the elements at `indices` into `out` (element_size() bytes each).
+  virtual void pack(const std::size_t* indices, std::size_t count, std::byte* out) const = 0;
+  /// Copies `count` elements from `in` to positions first, first+1, ...
+  virtual void unpack(const std::byte* in, std::size_t first, std::size_t count) = 0;
+
+private:
+  std::string name_;
+};
+
+template<class T>
+class field_storage final : public field_storage_base {
+  static_assert(std::is_trivially_copyable_v<T>, "field values are copied as bytes");
+
+public:
+  using view_type = Kokkos::View<T*, memory_space>;
+
+  field_storage(std::string name, std::size_t n)
+    : field_storage_base(std::move(name)), view_(Kokkos::view_alloc(this->name()), n) {}
+
+  view_type view() const { return view_; }
+  std::size_t element_size() const override { return sizeof(T); }
+  const std::type_info& element_type() const override { return typeid(T); }
+  std::size_t size() const override { return view_.extent(0); }
+
+  void resize(std::size_t n) override { Kokkos::resize(view_, n); }
+
+  void gather(const std::vector<std::size_t>& order, std::size_t tail) override {
+    view_type result(Kokkos::view_alloc(name()), order.size() + tail);
+    auto source = view_;
+    const std::size_t* o = order.data();
+    Kokkos::parallel_for("flecsi_lite::gather", Kokkos::RangePolicy<execution_space>(0, order.size()),
+                         KOKKOS_LAMBDA(std::size_t i) { result(i) = source(o[i]); });
+    Kokkos::fence();
+    view_ = result;
+  }
+
+  void pack(const std::size_t* indices, std::size_t count, std::byte* out) const override {
+    T* values = reinterpret_cast<T*>(out);
+    for (std::size_t i = 0; i < count; ++i) std::memcpy(values + i, &view_(indices[i]), sizeof(T));
+  }
+
+  void unpack(const std::byte* in, std::size_t first, std::size_t count) override {
+    if (count) std::memcpy(view_.data() + first, in, count * sizeof(T));
+  }
+
+private:
+  view_type view_;
+};
+
+} // namespace flecsi_lite::data

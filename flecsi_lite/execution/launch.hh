@@ -1,0 +1,36 @@
+// One recorded unit of work of the executor: a task, a ghost copy or a reduction, with the
+// launches it must wait for. Communication launches post non-blocking MPI requests when they
+// start and finish when those complete.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace flecsi_lite::execution {
+
+enum class launch_kind { task, ghost_copy, reduction };
+enum class launch_state { recorded, in_flight, done };
+
+struct launch {
+  std::uint64_t sequence = 0;  // program order
+  std::string name;
+  launch_kind kind = launch_kind::task;
+  launch_state state = launch_state::recorded;
+  std::vector<std::shared_ptr<launch>> dependencies;
+  std::function<void(launch&)> start;  // runs the task, or packs and posts the requests
+  std::function<void()> finish;        // after the requests complete: unpack, combine
+  std::vector<MPI_Request> requests;
+  std::uint64_t collective_index = 0;  // reductions start in program order on every rank
+  double begin_time = 0, end_time = 0;
+
+  bool communicates() const { return kind != launch_kind::task; }
+};
+
+using launch_ptr = std::shared_ptr<launch>;
+
+} // namespace flecsi_lite::execution

@@ -1,0 +1,22 @@
+// What the executor ran and when: one event per launch, in completion order. Written as Chrome
+// trace JSON (open in https://ui.perfetto.dev or chrome://tracing) with --trace FILE.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace flecsi_lite::execution {
+
+struct trace_event {
+  std::uint64_t sequence;  // program order of the launch
+  std::string name;
+  std::string kind;        // "task", "ghost_copy", "reduction"
+  double begin, end;       // seconds since the executor started
+};
+
+/// Writes the events of every rank (gathered to rank 0) as Chrome trace JSON. Collective.
+void write_chrome_trace(const std::vector<trace_event>& events, std::ostream& out);
+
+} // namespace flecsi_lite::execution

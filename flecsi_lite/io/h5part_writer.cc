@@ -1,0 +1,251 @@
+// Collective H5Part writer over parallel HDF5 (see h5part_writer.hh).
+#include "flecsi_lite/io/h5part_writer.hh"
+
+#include "flecsi_lite/io/collective_agreement.hh"
+#include "flecsi_lite/io/h5part_layout.hh"
+#include "flecsi_lite/io/h5part_steps.hh"
+#include "flecsi_lite/io/hdf5_attributes.hh"
+#include "flecsi_lite/io/hdf5_errors.hh"
+#include "flecsi_lite/io/hdf5_parallel.hh"
+#include "flecsi_lite/io/particle_partition.hh"
+#include "flecsi_lite/runtime/log.hh"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace flecsi_lite::io {
+
+namespace {
+int rank_of(MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  return rank;
+}
+
+// Exact text of a value, for checking that every rank passes the same one.
+std::string fingerprint(const std::string& name, const attribute_value& value) {
+  char real[40] = "";
+  if (auto* d = std::get_if<double>(&value)) std::snprintf(real, sizeof real, "%a", *d);
+  return name + '\0' + std::to_string(value.index()) + '\0' + (*real ? real : to_string(value));
+}
+} // namespace
+
+h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
+  : path_(std::move(path)), comm_(comm) {
+  hdf5_quiet_scope quiet;
+  // Appending works on a copy, so that the complete file stays intact until close().
+  int append_to_copy = 0;
+  if (how == mode::append) {
+    agree(comm_, [&] {
+      if (rank_of(comm_) != 0 || !std::filesystem::exists(path_)) return;
+      std::error_code error;
+      std::filesystem::copy_file(path_, partial_path(),
+                                 std::filesystem::copy_options::overwrite_existing, error);
+      if (error)
+        throw file_error("cannot copy '" + path_ + "' to '" + partial_path() +
+                         "' to append to it: " + error.message());
+      append_to_copy = 1;
+    });
+    MPI_Bcast(&append_to_copy, 1, MPI_INT, 0, comm_);
+  }
+
+  auto access = mpio_file_access(comm_);
+  const hid_t id = append_to_copy
+    ? H5Fopen(partial_path().c_str(), H5F_ACC_RDWR, access.get())
+    : H5Fcreate(partial_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
+  std::optional<failure_record> failed;
+  if (id < 0)
+    failed = failure_record{failure::file, "cannot " + std::string(append_to_copy ? "open" : "create") +
+                                             " '" + partial_path() + "' for writing" + hdf5_reason()};
+  file_ = file_handle(id);
+  try {
+    raise_if_any(comm_, failed);
+  } catch (...) {
+    file_.release();  // a parallel close on only the ranks that opened it would never return
+    throw;
+  }
+
+  if (append_to_copy) {
+    agree(comm_, [&] {
+      const auto steps = h5part::step_indices(file_.get());
+      for (std::size_t k = 0; k < steps.size(); ++k)
+        if (steps[k] != static_cast<std::int64_t>(k))
+          throw layout_error("cannot append to '" + path_ + "': its steps are not Step#0 to Step#" +
+                             std::to_string(steps.size() - 1));
+      steps_written_ = static_cast<std::int64_t>(steps.size());
+    });
+  }
+}
+
+h5part_writer::~h5part_writer() { abandon(); }
+
+void h5part_writer::abandon() noexcept {
+  if (!is_open()) return;
+  try {
+    hdf5_quiet_scope quiet;
+    if (in_step()) {
+      // An unfinished step would look complete to a reader: unlink it.
+      step_group_.close();
+      H5Ldelete(file_.get(), h5part::step_group_name(steps_written_).c_str(), H5P_DEFAULT);
+    }
+    file_.close();
+    if (rank_of(comm_) == 0)
+      log::warn() << "h5part: '" << path_ << "' was not closed; its " << steps_written_
+                  << " finished steps are in '" << partial_path() << "'";
+  } catch (...) {
+  }
+}
+
+void h5part_writer::require_open(const char* operation) const {
+  if (!is_open())
+    throw usage_error(std::string(operation) + ": the H5Part writer of '" + path_ + "' is closed");
+}
+
+void h5part_writer::set_attribute(const std::string& name, const attribute_value& value) {
+  hdf5_quiet_scope quiet;
+  if (!same_on_all_ranks(comm_, fingerprint(name, value)))
+    throw layout_error("ranks set different root attributes (or values) at the same point in '" +
+                       path_ + "'");
+  agree(comm_, [&] {
+    require_open("set_attribute");
+    write_attribute(file_.get(), name, value);
+  });
+}
+
+void h5part_writer::describe_run(const run_description& run) {
+  set_attribute(h5part::attribute::program, run.program);
+  set_attribute(h5part::attribute::parameters, run.parameters);
+  set_attribute(h5part::attribute::dimension, std::int64_t{run.dimension});
+}
+
+void h5part_writer::begin_step(const step_info& info) {
+  hdf5_quiet_scope quiet;
+  char text[96];
+  std::snprintf(text, sizeof text, "%a %lld %a", info.time, static_cast<long long>(info.step), info.dt);
+  if (!same_on_all_ranks(comm_, text))
+    throw layout_error("ranks begin a step of '" + path_ + "' with different time, step or dt");
+  hdf5_handle group;
+  agree(comm_, [&] {
+    require_open("begin_step");
+    if (in_step())
+      throw usage_error("begin_step: step " + std::to_string(steps_written_) + " of '" + path_ +
+                        "' is still open; call end_step first");
+    const std::string name = h5part::step_group_name(steps_written_);
+    group = group_handle(
+      H5Gcreate2(file_.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    if (!group) throw io_error(failure::system, "cannot create group " + name + " in '" + partial_path() + "'" + hdf5_reason());
+    write_attribute(group.get(), h5part::attribute::time_value, info.time);
+    write_attribute(group.get(), h5part::attribute::time, info.time);
+    write_attribute(group.get(), h5part::attribute::step, info.step);
+    write_attribute(group.get(), h5part::attribute::dt, info.dt);
+  });
+  step_group_ = std::move(group);
+  step_datasets_.clear();
+  step_length_.reset();
+}
+
+void h5part_writer::set_step_attribute(const std::string& name, const attribute_value& value) {
+  hdf5_quiet_scope quiet;
+  if (!same_on_all_ranks(comm_, fingerprint(name, value)))
+    throw layout_error("ranks set different step attributes (or values) at the same point in '" +
+                       path_ + "'");
+  agree(comm_, [&] {
+    require_open("set_step_attribute");
+    if (!in_step()) throw usage_error("set_step_attribute '" + name + "': no open step in '" + path_ + "'");
+    write_attribute(step_group_.get(), name, value);
+  });
+}
+
+void h5part_writer::write_array(const std::string& name, element_type type, const void* data,
+                                std::size_t local_count) {
+  hdf5_quiet_scope quiet;
+  const std::string step = "step " + std::to_string(steps_written_);
+  const std::string where = "dataset '" + name + "' of " + step + " in '" + path_ + "'";
+  agree(comm_, [&] {
+    require_open("write");
+    if (!in_step()) throw usage_error("write " + where + ": no open step; call begin_step first");
+    if (name.empty() || name == "." || name.find('/') != std::string::npos)
+      throw usage_error("write: '" + name + "' is not a valid dataset name (in " + step + " of '" + path_ + "')");
+    if (step_datasets_.count(name)) throw usage_error("write: " + where + " is already written");
+    if (local_count > 0 && data == nullptr) throw usage_error("write " + where + ": no data");
+  });
+  if (!same_on_all_ranks(comm_, name + '\0' + element_type_name(type)))
+    throw layout_error("ranks write different datasets (names or element types differ) at the same point of " +
+                       step + " in '" + path_ + "'");
+  const placement place = place_contiguously(comm_, local_count);
+  if (step_length_ && *step_length_ != place.global_length)
+    throw layout_error(where + " has " + std::to_string(place.global_length) +
+                       " particles but the step's other datasets have " + std::to_string(*step_length_));
+
+  hdf5_handle dataset, file_space, memory_space;
+  agree(comm_, [&] {
+    const hsize_t global = place.global_length, count = place.local.count, offset = place.local.offset;
+    auto global_space = dataspace_handle(H5Screate_simple(1, &global, nullptr));
+    auto creation = property_list_handle(H5Pcreate(H5P_DATASET_CREATE));
+    // Every element is written below: no fill value needed.
+    if (!global_space || !creation || H5Pset_fill_time(creation.get(), H5D_FILL_TIME_NEVER) < 0)
+      throw io_error(failure::system, "cannot describe " + where + hdf5_reason());
+    dataset = dataset_handle(H5Dcreate2(step_group_.get(), name.c_str(), file_type(type),
+                                        global_space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
+    if (!dataset) throw io_error(failure::system, "cannot create " + where + hdf5_reason());
+    file_space = dataspace_handle(H5Dget_space(dataset.get()));
+    memory_space = dataspace_handle(H5Screate_simple(1, &count, nullptr));
+    const herr_t selected = count > 0
+      ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr)
+      : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
+    if (!file_space || !memory_space || selected < 0)
+      throw io_error(failure::system, "cannot select this rank's part of " + where + hdf5_reason());
+  });
+
+  // Collective: every rank takes part, those without particles with an empty selection.
+  auto transfer = collective_transfer();
+  const char nothing = 0;
+  std::optional<failure_record> failed;
+  if (H5Dwrite(dataset.get(), memory_type(type), memory_space.get(), file_space.get(),
+               transfer.get(), local_count > 0 ? data : &nothing) < 0)
+    failed = failure_record{failure::system, "cannot write " + where + hdf5_reason()};
+  raise_if_any(comm_, failed);
+  step_datasets_.insert(name);
+  step_length_ = place.global_length;
+}
+
+void h5part_writer::end_step() {
+  hdf5_quiet_scope quiet;
+  agree(comm_, [&] {
+    require_open("end_step");
+    if (!in_step()) throw usage_error("end_step: no open step in '" + path_ + "'");
+    if (step_group_.close() < 0)
+      throw io_error(failure::system, "cannot close step " + std::to_string(steps_written_) +
+                                        " of '" + path_ + "'" + hdf5_reason());
+    write_attribute(file_.get(), h5part::attribute::num_steps, std::int64_t{steps_written_ + 1});
+  });
+  ++steps_written_;
+  step_datasets_.clear();
+  step_length_.reset();
+  // The partial file now holds every finished step, should the run stop here.
+  std::optional<failure_record> failed;
+  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0)
+    failed = failure_record{failure::system, "cannot flush '" + partial_path() + "'" + hdf5_reason()};
+  raise_if_any(comm_, failed);
+}
+
+void h5part_writer::close() {
+  if (!is_open()) return;
+  if (in_step()) end_step();
+  hdf5_quiet_scope quiet;
+  std::optional<failure_record> failed;
+  if (file_.close() < 0)
+    failed = failure_record{failure::file, "cannot close '" + partial_path() + "'" + hdf5_reason()};
+  raise_if_any(comm_, failed);
+  // Only now, with every byte written by every rank, does the file take its final name.
+  if (rank_of(comm_) == 0) {
+    std::error_code error;
+    std::filesystem::rename(partial_path(), path_, error);
+    if (error)
+      failed = failure_record{failure::file, "cannot rename '" + partial_path() + "' to '" + path_ +
+                                               "': " + error.message()};
+  }
+  raise_if_any(comm_, failed);  // also keeps every rank here until the rename is done
+}
+
+} // namespace flecsi_lite::io

@@ -1,0 +1,158 @@
+// Radius searches with per-particle smoothing lengths on the hashed tree: one depth-first walk
+// per target (Barnes & Hut 1986 tree descent with a box-distance test), gather or symmetric,
+// periodic images included; neighbours come in ascending sorted index.
+#pragma once
+
+#include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/search_dispatch.hh"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace flecsi_lite::topology::ntree {
+
+/// Calls visit(b, code) for every source image x_b + shift(code) of `tree` within
+/// interaction_radius<Kind>(support, h_target, h_b) of `x`, in ascending (b, code). `allowed`
+/// is the mask of image shifts to try (domain::allowed_shifts()). Node boxes are pruned with
+/// the box distance, which never exceeds a member's distance, so the result is exact.
+template<int D, interaction Kind, bool Periodic, class Visit>
+void walk_target(const hashed_tree<D>& tree,
+                 const std::array<point<D>, shift_code_count<D>>& shifts, std::uint32_t allowed,
+                 const point<D>& x, double h_target, double support, Visit&& visit) {
+  if (tree.size() == 0) return;
+  const tree_node<D>* nodes = tree.nodes().data();
+  const point<D>* positions = tree.positions();
+  const double* h = tree.smoothing_lengths();
+  const double target_radius = support * h_target;
+
+  walk_entry stack[walk_stack_size<D>];
+  int top = 0;
+  stack[top++] = walk_entry{0, Periodic ? allowed : 0u};
+  while (top > 0) {
+    const walk_entry entry = stack[--top];
+    const tree_node<D>& node = nodes[entry.node];
+    const double reach = Kind == interaction::gather
+                           ? target_radius
+                           : std::max(target_radius, support * node.h_max);
+    const double reach_squared = reach * reach;
+    std::uint32_t pass = 0;
+    if constexpr (Periodic) {
+      for (std::uint32_t rest = entry.shifts; rest != 0; rest &= rest - 1) {
+        const int code = __builtin_ctz(rest);
+        if (distance_squared<D>(node.bounds.shifted(shifts[code]), x) < reach_squared)
+          pass |= std::uint32_t{1} << code;
+      }
+      if (pass == 0) continue;
+    } else {
+      if (!(distance_squared<D>(node.bounds, x) < reach_squared)) continue;
+    }
+
+    if (!node.is_leaf()) {
+      // Children pushed last-first so that they are popped in key (= index) order.
+      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;)
+        stack[top++] = walk_entry{c, pass};
+      continue;
+    }
+    for (std::uint32_t b = node.begin; b < node.end; ++b) {
+      const double radius = interaction_radius<Kind>(support, h_target, h[b]);
+      if constexpr (Periodic) {
+        for (std::uint32_t rest = pass; rest != 0; rest &= rest - 1) {
+          const int code = __builtin_ctz(rest);
+          point<D> image;
+          for (int k = 0; k < D; ++k) image[k] = positions[b][k] + shifts[code][k];
+          if (within_radius(distance_squared<D>(x, image), radius))
+            visit(b, static_cast<shift_code>(code));
+        }
+      } else {
+        if (within_radius(distance_squared<D>(x, positions[b]), radius))
+          visit(b, zero_shift<D>);
+      }
+    }
+  }
+}
+
+/// Ball query: calls visit(b, code) for every source image within `radius` of the point `x`
+/// (|x - (x_b + shift)| < radius), in ascending (b, code).
+template<int D, class Visit>
+void for_each_within(const hashed_tree<D>& tree, const domain<D>& space, const point<D>& x,
+                     double radius, Visit&& visit) {
+  const auto shifts = space.shift_table();
+  if (space.any_periodic())
+    walk_target<D, interaction::gather, true>(tree, shifts, space.allowed_shifts(), x, radius,
+                                              1.0, visit);
+  else
+    walk_target<D, interaction::gather, false>(tree, shifts, 0, x, radius, 1.0, visit);
+}
+
+/// Per-target radius search: each target walks the tree on its own. Simple and exact; the
+/// group walk (group_walk.hh) shares one walk among nearby targets and is usually faster.
+template<int D>
+class radius_search {
+public:
+  explicit radius_search(search_options options = {}) : options_(options) {}
+
+  const search_options& options() const { return options_; }
+
+  /// Calls apply(a, b) or apply(a, b, shift) for every target a and each of its neighbours b,
+  /// in parallel over targets; the calls for one target come from one thread in ascending b.
+  template<class F>
+  void for_each_neighbour(const hashed_tree<D>& tree, const domain<D>& space, F&& apply) const {
+    check_functor<D, std::remove_reference_t<F>>(space);
+    check_periodic_reach(tree, space, options_.support);
+    const auto shifts = space.shift_table();
+    const std::uint32_t allowed = space.allowed_shifts();
+    const search_options options = options_;
+    dispatch_search(options.kind, space.any_periodic(), [&](auto kind, auto periodic) {
+      host_for_dynamic("ntree::radius_search", tree.size(), [&](std::size_t a) {
+        if (!options.is_target(a)) return;
+        walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
+          tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a],
+          options.support, [&](std::size_t b, shift_code code) {
+            call_apply<D>(apply, a, b, code, shifts);
+          });
+      });
+    });
+  }
+
+  /// Neighbour lists of all targets (shift codes too when the domain is periodic).
+  void find_neighbours(const hashed_tree<D>& tree, const domain<D>& space,
+                       neighbour_lists& out) {
+    check_periodic_reach(tree, space, options_.support);
+    const std::size_t n = tree.size();
+    const std::size_t chunks = chunk_count_for(n);
+    builder_.start(n, chunks, out);
+    const auto shifts = space.shift_table();
+    const std::uint32_t allowed = space.allowed_shifts();
+    const bool periodic_domain = space.any_periodic();
+    const search_options options = options_;
+    std::size_t* counts = out.offsets.data();
+    dispatch_search(options.kind, periodic_domain, [&](auto kind, auto periodic) {
+      host_for_dynamic("ntree::radius_search::lists", chunks, [&](std::size_t c) {
+        auto& part = builder_[c];
+        const std::size_t first = n * c / chunks;
+        const std::size_t last = n * (c + 1) / chunks;
+        part.first_target = first;
+        for (std::size_t a = first; a < last; ++a) {
+          if (!options.is_target(a)) continue;
+          const std::size_t before = part.neighbours.size();
+          walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
+            tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a],
+            options.support, [&](std::size_t b, shift_code code) {
+              part.neighbours.push_back(static_cast<std::uint32_t>(b));
+              if (periodic_domain) part.shifts.push_back(code);
+            });
+          counts[a] = part.neighbours.size() - before;
+        }
+      });
+    });
+    builder_.finish(out, periodic_domain);
+  }
+
+private:
+  search_options options_;
+  neighbour_list_builder builder_;
+};
+
+} // namespace flecsi_lite::topology::ntree

@@ -1,0 +1,78 @@
+// Plumbing shared by the ntree neighbour searches: compile-time dispatch on the interaction kind
+// and on periodicity, the check that periodic images are unique, and the user-functor adaptor.
+#pragma once
+
+#include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/periodic.hh"
+
+#include <stdexcept>
+#include <type_traits>
+
+namespace flecsi_lite::topology::ntree {
+
+/// Calls body(kind, periodic) with both as compile-time constants (std::integral_constant), so
+/// that the inner loops of a search are compiled once per case without run-time branches.
+template<class Body>
+void dispatch_search(interaction kind, bool periodic, Body&& body) {
+  using gather = std::integral_constant<interaction, interaction::gather>;
+  using symmetric = std::integral_constant<interaction, interaction::symmetric>;
+  if (kind == interaction::gather) {
+    if (periodic) body(gather{}, std::true_type{});
+    else body(gather{}, std::false_type{});
+  } else {
+    if (periodic) body(symmetric{}, std::true_type{});
+    else body(symmetric{}, std::false_type{});
+  }
+}
+
+/// Throws unless every interaction radius is at most half of every period: then a source is
+/// within reach of a target under at most one image shift, and lists hold each source once.
+template<int D>
+void check_periodic_reach(const hashed_tree<D>& tree, const domain<D>& space, double support) {
+  if (!space.any_periodic() || tree.size() == 0) return;
+  for (int k = 0; k < D; ++k)
+    if (space.periodic[k] && !(space.period(k) > 0))
+      throw std::invalid_argument("ntree: a periodic axis needs a positive period");
+  if (2 * support * tree.root().h_max > space.min_period())
+    throw std::invalid_argument("ntree: interaction radius exceeds half of a periodic length");
+}
+
+/// True when `F` takes the image shift: apply(target, neighbour, shift).
+template<int D, class F>
+constexpr bool takes_shift =
+  std::is_invocable_v<F&, std::size_t, std::size_t, const point<D>&>;
+
+/// Checks a user functor for apply(target, neighbour) or apply(target, neighbour, shift); the
+/// two-argument form cannot place periodic images, so it is refused on a periodic domain.
+template<int D, class F>
+void check_functor(const domain<D>& space) {
+  static_assert(takes_shift<D, F> || std::is_invocable_v<F&, std::size_t, std::size_t>,
+                "apply must be callable as apply(target, neighbour) or "
+                "apply(target, neighbour, shift)");
+  if constexpr (!takes_shift<D, F>) {
+    if (space.any_periodic())
+      throw std::invalid_argument(
+        "ntree: on a periodic domain apply must take the image shift as third argument");
+  }
+}
+
+/// Calls the user functor with or without the shift vector of `code`.
+template<int D, class F>
+inline void call_apply(F& apply, std::size_t target, std::size_t neighbour, shift_code code,
+                       const std::array<point<D>, shift_code_count<D>>& shifts) {
+  if constexpr (takes_shift<D, F>) apply(target, neighbour, shifts[code]);
+  else apply(target, neighbour);
+}
+
+/// Room for a depth-first walk: at most (children - 1) nodes wait per level, plus the root.
+template<int D>
+constexpr int walk_stack_size = max_level<D> * (children_per_cell<D> - 1) + 2;
+
+/// An entry of a walk's stack: a node and the image shifts under which it may still matter.
+struct walk_entry {
+  std::uint32_t node;
+  std::uint32_t shifts;
+};
+
+} // namespace flecsi_lite::topology::ntree

@@ -1,0 +1,111 @@
+// Ghost copies happen exactly when a launch reads stale ghost values, and deliver the owners'
+// values; a diffusion run on the narray matches the serial computation bit for bit.
+#include <catch2/catch.hpp>
+
+#include "flecsi_lite/data.hh"
+#include "flecsi_lite/execution.hh"
+#include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/topology/narray.hh"
+
+#include <cmath>
+
+using namespace flecsi_lite;
+using topology::narray;
+
+namespace {
+const field<double>::definition<narray> u{"u"};
+const field<double>::definition<narray> next{"next"};
+
+void initialize(const narray& n, field<double>::accessor<wo> f, double scale) {
+  for (std::size_t i = 0; i < f.size(); ++i) f(i) = scale * static_cast<double>(n.global_index(i));
+}
+void write_ghosts(field<double>::accessor<na, wo> f) {
+  for (std::size_t i = f.owned_size(); i < f.size(); ++i) f(i) = -1;
+}
+bool ghosts_hold(const narray& n, field<double>::accessor<ro, ro> f, double scale) {
+  for (std::size_t i = f.owned_size(); i < f.size(); ++i)
+    if (f(i) != scale * static_cast<double>(n.global_index(i))) return false;
+  return true;
+}
+double owned_sum(field<double>::accessor<ro> f) {
+  double s = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) s += f(i);
+  return s;
+}
+void smooth(const narray& n, field<double>::accessor<ro, ro> from, field<double>::accessor<wo> to) {
+  forall(to.size(), [&](std::size_t i) {
+    const double left = from(n.neighbor(i, -1)), right = from(n.neighbor(i, 1));
+    to(i) = from(i) + 0.25 * (left - 2 * from(i) + right);
+  });
+}
+void copy_back(field<double>::accessor<ro> from, field<double>::accessor<wo> to) {
+  for (std::size_t i = 0; i < to.size(); ++i) to(i) = from(i);
+}
+
+std::uint64_t copies() { return execution::executor::instance().ghost_copies_started(); }
+bool all_ranks(bool mine) {
+  int in = mine, out = 0;
+  MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LAND, runtime::communicator());
+  return out;
+}
+} // namespace
+
+TEST_CASE("ghost copies happen when and only when ghost values are stale") {
+  narray n(40, 2, true);
+  const auto start = copies();
+  execute<initialize>(n, u(n), 1.0);
+  CHECK(copies() == start);                        // writing owned values copies nothing
+  execute<owned_sum>(u(n));
+  CHECK(copies() == start);                        // reading owned values copies nothing
+  CHECK(all_ranks(execute<ghosts_hold>(n, u(n), 1.0).get()));
+  CHECK(copies() == start + 1);                    // first ghost read: one copy
+  execute<ghosts_hold>(n, u(n), 1.0);
+  execute<ghosts_hold>(n, u(n), 1.0);
+  CHECK(copies() == start + 1);                    // still valid: no copy
+  execute<initialize>(n, u(n), 3.0);               // owned values change: ghosts stale
+  CHECK(all_ranks(execute<ghosts_hold>(n, u(n), 3.0).get()));
+  CHECK(copies() == start + 2);
+  execute<write_ghosts>(u(n));                     // a task defines the ghost values itself
+  execute<ghosts_hold>(n, u(n), 3.0);
+  CHECK(copies() == start + 2);
+  wait_all();
+}
+
+TEST_CASE("ghost values come from the owning ranks, periodic and not") {
+  for (bool periodic : {true, false}) {
+    narray n(30, 3, periodic);
+    execute<initialize>(n, u(n), 0.5);
+    CHECK(all_ranks(execute<ghosts_hold>(n, u(n), 0.5).get()));
+    const std::size_t expected_ghosts =
+      (periodic || runtime::rank() > 0 ? 3 : 0) + (periodic || runtime::rank() + 1 < runtime::size() ? 3 : 0);
+    CHECK(n.ghost_size() == expected_ghosts);
+  }
+}
+
+TEST_CASE("diffusion on any rank count equals the serial computation bitwise") {
+  const std::size_t global = 97;  // not divisible by the rank counts
+  narray n(global, 1, true);
+  execute<initialize>(n, u(n), 1.0);
+  for (int step = 0; step < 50; ++step) {
+    execute<smooth>(n, u(n), next(n));
+    execute<copy_back>(next(n), u(n));
+  }
+  std::vector<double> serial(global), serial_next(global);
+  for (std::size_t i = 0; i < global; ++i) serial[i] = double(i);
+  for (int step = 0; step < 50; ++step) {
+    for (std::size_t i = 0; i < global; ++i) {
+      const double left = serial[(i + global - 1) % global], right = serial[(i + 1) % global];
+      serial_next[i] = serial[i] + 0.25 * (left - 2 * serial[i] + right);
+    }
+    serial = serial_next;
+  }
+  auto values = host_view(u(n));
+  bool identical = true;
+  for (std::size_t i = 0; i < n.owned_size(); ++i) identical &= values(i) == serial[n.global_index(i)];
+  CHECK(all_ranks(identical));
+}
+
+TEST_CASE("a block smaller than the halo is a clear error") {
+  if (runtime::size() < 2) return;
+  CHECK_THROWS_WITH(narray(3, 2, true), Catch::Contains("smaller than the halo"));
+}

@@ -1,0 +1,62 @@
+// reduce<task, op>: sum, min, max over ranks, identical on every rank; exact_sum identical on
+// every rank count.
+#include <catch2/catch.hpp>
+
+#include "flecsi_lite/data.hh"
+#include "flecsi_lite/execution.hh"
+#include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/topology/narray.hh"
+
+using namespace flecsi_lite;
+using topology::narray;
+
+namespace {
+const field<double>::definition<narray> value{"value"};
+
+double rank_value() { return static_cast<double>(runtime::rank() + 1); }
+long rank_count() { return 1; }
+// Values whose naive sum depends on the grouping: 1e16, 1, -1e16, 1, ... over 64 entities.
+void fill(const narray& n, field<double>::accessor<wo> f) {
+  for (std::size_t i = 0; i < f.size(); ++i) f(i) = n.global_index(i) % 2 ? 1.0 : (n.global_index(i) % 4 ? -1e16 : 1e16);
+}
+util::exact_sum local_exact(field<double>::accessor<ro> f) {
+  util::exact_sum s;
+  for (std::size_t i = 0; i < f.size(); ++i) s.add(f(i));
+  return s;
+}
+double local_plain(field<double>::accessor<ro> f) {
+  double s = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) s += f(i);
+  return s;
+}
+double twice(double x) { return 2 * x; }
+} // namespace
+
+TEST_CASE("sum, min and max over ranks") {
+  const int p = runtime::size();
+  CHECK(reduce<rank_value, reduction::sum>().get() == p * (p + 1) / 2.0);
+  CHECK(reduce<rank_value, reduction::min>().get() == 1.0);
+  CHECK(reduce<rank_value, reduction::max>().get() == double(p));
+  CHECK(reduce<rank_count, reduction::sum>().get() == p);
+}
+
+TEST_CASE("exact sums are the same on any number of ranks") {
+  narray n(64, 0, false);
+  execute<fill>(n, value(n));
+  CHECK(reduce<local_exact, reduction::exact_sum>(value(n)).get() == 32.0);
+  // The same partial sums, each already rounded on its rank, still combine exactly.
+  const double combined = reduce<local_plain, reduction::exact_sum>(value(n)).get();
+  const double identical_everywhere = reduce<local_plain, reduction::sum>(value(n)).get();
+  double lo = combined, hi = combined;
+  MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, runtime::communicator());
+  MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, runtime::communicator());
+  CHECK(lo == hi);
+  (void)identical_everywhere;
+}
+
+TEST_CASE("a reduction's future feeds a task") {
+  auto total = reduce<rank_value, reduction::sum>();
+  auto doubled = execute<twice>(total);
+  const int p = runtime::size();
+  CHECK(doubled.get() == p * (p + 1.0));
+}
