@@ -131,13 +131,14 @@ auto execute(Args&&... args) {
   using result = typename function_traits<decltype(F)>::result;
   auto [binders, c] = prepare<F>(std::forward<Args>(args)...);
   auto& ex = execution::executor::instance();
+  static const std::string name = task_name<F>();
   if constexpr (std::is_void_v<result>) {
-    auto l = ex.record(task_name<F>(), execution::launch_kind::task, c.accesses, std::move(c.after),
+    auto l = ex.record(name, execution::launch_kind::task, c.accesses, std::move(c.after),
                        [b = binders](execution::launch&) { std::apply([](auto&... a) { F(a.get()...); }, *b); });
     return future<void>(l);
   } else {
     auto value = std::make_shared<std::optional<result>>();
-    auto l = ex.record(task_name<F>(), execution::launch_kind::task, c.accesses, std::move(c.after),
+    auto l = ex.record(name, execution::launch_kind::task, c.accesses, std::move(c.after),
                        [b = binders, value](execution::launch&) {
                          *value = std::apply([](auto&... a) { return F(a.get()...); }, *b);
                        });
@@ -162,8 +163,9 @@ auto reduce(Args&&... args) {
     std::vector<transported> all;
   };
   auto buffer = std::make_shared<buffers>();
+  static const std::string name = task_name<F>();
   auto l = execution::executor::instance().record(
-    task_name<F>(), execution::launch_kind::reduction, c.accesses, std::move(c.after),
+    name, execution::launch_kind::reduction, c.accesses, std::move(c.after),
     [b = binders, buffer](execution::launch& self) {
       buffer->mine = carrier::pack(std::apply([](auto&... a) { return F(a.get()...); }, *b));
       buffer->all.resize(runtime::size());

@@ -2,6 +2,7 @@
 
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/runtime/runtime.hh"
+#include "flecsi_lite/runtime/timers.hh"
 
 #include <algorithm>
 #include <fstream>
@@ -14,6 +15,8 @@ const char* kind_name(launch_kind k) {
 }
 // Tags of ghost-copy messages: distinct for copies that may be in flight together.
 constexpr int first_copy_tag = 1000, copy_tag_count = 30000;
+// Launches recorded ahead of execution before the executor starts running them.
+constexpr std::size_t window = 128;
 } // namespace
 
 executor& executor::instance() {
@@ -90,6 +93,10 @@ launch_ptr executor::record(std::string name, launch_kind kind,
   l->sequence = next_sequence_++;
   if (kind == launch_kind::reduction) l->collective_index = next_collective_recorded_++;
   queue_.push_back(l);
+  // Scheduling scans the queue, so keep it short: run launches once the window is full.
+  if (queue_.size() >= window)
+    while (queue_.size() > window / 2)
+      if (!progress()) block_until_any_request();
   return l;
 }
 
@@ -181,6 +188,7 @@ void executor::complete(launch& l) {
   l.requests.clear();
   l.start = nullptr;
   l.finish = nullptr;
+  if (l.kind == launch_kind::task) timers::add(l.name, l.end_time - l.begin_time);
   if (tracing_) trace_.push_back({l.sequence, l.name, kind_name(l.kind), l.begin_time, l.end_time});
 }
 
@@ -192,11 +200,16 @@ bool executor::progress() {
       begin(*l);
       progressed = true;
     }
+  // Then tasks in program order; stop after one if communication waits to start, so that it
+  // starts as soon as its inputs are ready.
+  bool communication_waiting = false;
+  for (auto& l : queue_)
+    communication_waiting |= l->communicates() && l->state == launch_state::recorded;
   for (auto& l : queue_)
     if (!l->communicates() && ready(*l)) {
       begin(*l);
       progressed = true;
-      break;
+      if (communication_waiting) break;
     }
   for (auto& l : queue_) {
     if (l->state != launch_state::in_flight) continue;
