@@ -6,6 +6,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <cstdlib>
 #include <iostream>
 #include <vector>
 
@@ -26,6 +27,8 @@ runtime::runtime(int& argc, char**& argv, options program_options)
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   MPI_Comm_dup(MPI_COMM_WORLD, &framework_comm);
   detail::set_communicator(framework_comm);
+  // Thread binding stays off unless the user asks (Kokkos warns when the variable is unset).
+  setenv("OMP_PROC_BIND", "false", 0);
   Kokkos::initialize(argc, argv);  // removes the --kokkos-* arguments it recognizes
 
   std::string program = argc > 0 ? argv[0] : "program";
