@@ -89,19 +89,22 @@ sedov_taylor::point sedov_taylor::evaluate(double s) const {
   const double x3 = d_ * (1.0 - e_ * V);
   const double x4 = b_ * (1.0 - c_ * V / g);
 
+  // Products of powers as exponentials of sums of logarithms: near gamma = 2 the exponents
+  // alpha4 and alpha5 are large and of opposite sign, and separate powers would overflow.
+  const double log_x1 = std::log(x1), log_x2 = std::log(x2);
+  const double log_x3 = std::log(x3), log_x4 = std::log(x4);
   point result{};
-  result.lambda = std::pow(x1, -alpha0_) * std::pow(x2, -alpha2_) * std::pow(x3, -alpha1_);
+  result.lambda = std::exp(-alpha0_ * log_x1 - alpha2_ * log_x2 - alpha1_ * log_x3);
   result.values.f = x1 * result.lambda;
   if (omega3_singular_) {  // Kamm & Timmes, omega = omega3 forms (x3 = x4 at gamma = 2)
-    const double exponential =
-      std::exp(-j * g * (g + 1.0) * (1.0 - x1) / (2.0 * e_ * ((g + 1.0) / 2.0 - x1)));
-    result.values.g = std::pow(x2, alpha3_) * std::pow(x4, 1.0 - 2.0 / e_) * exponential;
-    result.values.h = std::pow(x1, alpha0_ * j) * std::pow(x4, (j * (g - 1.0) - g) / e_) *
-                      exponential;
+    const double exponent = -j * g * (g + 1.0) * (1.0 - x1) / (2.0 * e_ * ((g + 1.0) / 2.0 - x1));
+    result.values.g = std::exp(alpha3_ * log_x2 + (1.0 - 2.0 / e_) * log_x4 + exponent);
+    result.values.h =
+      std::exp(alpha0_ * j * log_x1 + (j * (g - 1.0) - g) / e_ * log_x4 + exponent);
   } else {
-    result.values.g = std::pow(x2, alpha3_) * std::pow(x3, alpha4_) * std::pow(x4, alpha5_);
-    result.values.h = std::pow(x1, alpha0_ * j) * std::pow(x3, alpha4_ - 2.0 * alpha1_) *
-                      std::pow(x4, 1.0 + alpha5_);
+    result.values.g = std::exp(alpha3_ * log_x2 + alpha4_ * log_x3 + alpha5_ * log_x4);
+    result.values.h = std::exp(alpha0_ * j * log_x1 + (alpha4_ - 2.0 * alpha1_) * log_x3 +
+                               (1.0 + alpha5_) * log_x4);
   }
   if (s > 0.0) {
     // d ln(lambda)/ds: the x2 factor contributes exactly 1/s; x1 and x3 through dV/ds.
