@@ -10,6 +10,7 @@
 #include "flecsi_lite/io/particle_partition.hh"
 #include "flecsi_lite/runtime/log.hh"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -50,9 +51,13 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
   }
 
   auto access = mpio_file_access(comm_);
+  // No modification time on the root group either: identical runs write identical files.
+  auto creation = property_list_handle(H5Pcreate(H5P_FILE_CREATE));
+  if (!creation || H5Pset_obj_track_times(creation.get(), false) < 0)
+    throw io_error(failure::system, "cannot describe '" + partial_path() + "'" + hdf5_reason());
   const hid_t id = append_to_copy
     ? H5Fopen(partial_path().c_str(), H5F_ACC_RDWR, access.get())
-    : H5Fcreate(partial_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
+    : H5Fcreate(partial_path().c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
   std::optional<failure_record> failed;
   if (id < 0)
     failed = failure_record{failure::file, "cannot " + std::string(append_to_copy ? "open" : "create") +
@@ -131,9 +136,15 @@ void h5part_writer::begin_step(const step_info& info) {
       throw usage_error("begin_step: step " + std::to_string(steps_written_) + " of '" + path_ +
                         "' is still open; call end_step first");
     const std::string name = h5part::step_group_name(steps_written_);
+    // No modification times: identical runs write identical files.
+    auto creation = property_list_handle(H5Pcreate(H5P_GROUP_CREATE));
+    if (!creation || H5Pset_obj_track_times(creation.get(), false) < 0)
+      throw io_error(failure::system, "cannot describe group " + name + hdf5_reason());
     group = group_handle(
-      H5Gcreate2(file_.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-    if (!group) throw io_error(failure::system, "cannot create group " + name + " in '" + partial_path() + "'" + hdf5_reason());
+      H5Gcreate2(file_.get(), name.c_str(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
+    if (!group)
+      throw io_error(failure::system,
+                     "cannot create group " + name + " in '" + partial_path() + "'" + hdf5_reason());
     write_attribute(group.get(), h5part::attribute::time_value, info.time);
     write_attribute(group.get(), h5part::attribute::time, info.time);
     write_attribute(group.get(), h5part::attribute::step, info.step);
@@ -165,13 +176,14 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
     require_open("write");
     if (!in_step()) throw usage_error("write " + where + ": no open step; call begin_step first");
     if (name.empty() || name == "." || name.find('/') != std::string::npos)
-      throw usage_error("write: '" + name + "' is not a valid dataset name (in " + step + " of '" + path_ + "')");
+      throw usage_error("write: '" + name + "' is not a valid dataset name (in " + step + " of '" +
+                        path_ + "')");
     if (step_datasets_.count(name)) throw usage_error("write: " + where + " is already written");
     if (local_count > 0 && data == nullptr) throw usage_error("write " + where + ": no data");
   });
   if (!same_on_all_ranks(comm_, name + '\0' + element_type_name(type)))
-    throw layout_error("ranks write different datasets (names or element types differ) at the same point of " +
-                       step + " in '" + path_ + "'");
+    throw layout_error("ranks write different datasets (names or element types differ) at the "
+                       "same point of " + step + " in '" + path_ + "'");
   const placement place = place_contiguously(comm_, local_count);
   if (step_length_ && *step_length_ != place.global_length)
     throw layout_error(where + " has " + std::to_string(place.global_length) +
@@ -182,8 +194,10 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
     const hsize_t global = place.global_length, count = place.local.count, offset = place.local.offset;
     auto global_space = dataspace_handle(H5Screate_simple(1, &global, nullptr));
     auto creation = property_list_handle(H5Pcreate(H5P_DATASET_CREATE));
-    // Every element is written below: no fill value needed.
-    if (!global_space || !creation || H5Pset_fill_time(creation.get(), H5D_FILL_TIME_NEVER) < 0)
+    // Every element is written below: no fill value needed. No modification times: identical
+    // runs write identical files.
+    if (!global_space || !creation || H5Pset_fill_time(creation.get(), H5D_FILL_TIME_NEVER) < 0 ||
+        H5Pset_obj_track_times(creation.get(), false) < 0)
       throw io_error(failure::system, "cannot describe " + where + hdf5_reason());
     dataset = dataset_handle(H5Dcreate2(step_group_.get(), name.c_str(), file_type(type),
                                         global_space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
@@ -197,12 +211,14 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
       throw io_error(failure::system, "cannot select this rank's part of " + where + hdf5_reason());
   });
 
-  // Collective: every rank takes part, those without particles with an empty selection.
+  // Collective: every rank takes part, those without particles with an empty selection. A
+  // dataset without any element has no storage to write to (the same on every rank).
   auto transfer = collective_transfer();
   const char nothing = 0;
   std::optional<failure_record> failed;
-  if (H5Dwrite(dataset.get(), memory_type(type), memory_space.get(), file_space.get(),
-               transfer.get(), local_count > 0 ? data : &nothing) < 0)
+  if (place.global_length > 0 &&
+      H5Dwrite(dataset.get(), memory_type(type), memory_space.get(), file_space.get(), transfer.get(),
+               local_count > 0 ? data : &nothing) < 0)
     failed = failure_record{failure::system, "cannot write " + where + hdf5_reason()};
   raise_if_any(comm_, failed);
   step_datasets_.insert(name);

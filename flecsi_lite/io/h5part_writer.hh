@@ -24,6 +24,7 @@
 #include "flecsi_lite/io/attribute_value.hh"
 #include "flecsi_lite/io/element_type.hh"
 #include "flecsi_lite/io/hdf5_handle.hh"
+#include "flecsi_lite/io/step_info.hh"
 #include "flecsi_lite/runtime/context.hh"
 
 #include <mpi.h>
@@ -35,13 +36,6 @@
 #include <string>
 
 namespace flecsi_lite::io {
-
-/// The time of one step.
-struct step_info {
-  double time = 0;
-  std::int64_t step = 0;  // the simulation's iteration number
-  double dt = 0;
-};
 
 /// Root attributes that describe a run (program, resolved parameters, dimension).
 struct run_description {

@@ -14,7 +14,7 @@ public:
 
   hdf5_handle() = default;
   /// Takes `id` (negative: the failed result of an HDF5 call, held as an invalid handle).
-  hdf5_handle(hid_t id, closer close) : id_(id), close_(close) {}
+  hdf5_handle(hid_t id, closer close_function) : id_(id), close_(close_function) {}
   hdf5_handle(const hdf5_handle&) = delete;
   hdf5_handle& operator=(const hdf5_handle&) = delete;
   hdf5_handle(hdf5_handle&& other) noexcept

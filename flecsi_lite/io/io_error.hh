@@ -12,6 +12,7 @@ enum class failure {
   file,      // missing, unreadable, not HDF5, truncated or corrupted, cannot be created or renamed
   step,      // no such step in the file
   dataset,   // no such dataset in the step
+  attribute, // no such attribute
   layout,    // the file or the calls break the H5Part layout (lengths differ, ranks disagree)
   type,      // element type of a dataset or attribute differs from the one asked for
   slice,     // a requested slice lies outside the dataset
@@ -37,6 +38,9 @@ struct missing_step_error : io_error {
 struct missing_dataset_error : io_error {
   explicit missing_dataset_error(const std::string& m) : io_error(failure::dataset, m) {}
 };
+struct missing_attribute_error : io_error {
+  explicit missing_attribute_error(const std::string& m) : io_error(failure::attribute, m) {}
+};
 struct layout_error : io_error {
   explicit layout_error(const std::string& m) : io_error(failure::layout, m) {}
 };
@@ -56,6 +60,7 @@ struct usage_error : io_error {
     case failure::file: throw file_error(message);
     case failure::step: throw missing_step_error(message);
     case failure::dataset: throw missing_dataset_error(message);
+    case failure::attribute: throw missing_attribute_error(message);
     case failure::layout: throw layout_error(message);
     case failure::type: throw element_type_error(message);
     case failure::slice: throw slice_error(message);

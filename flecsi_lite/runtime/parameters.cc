@@ -133,13 +133,11 @@ std::optional<std::vector<double>> parse_real_list(const std::string& text, std:
   return values;
 }
 
+// The shortest text that reads back as exactly `value` (std::to_chars without a format).
 std::string shortest_real(double value) {
   char text[32];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, value);
-    if (std::strtod(text, nullptr) == value) break;
-  }
-  return text;
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
 }
 } // namespace
 
@@ -192,15 +190,17 @@ parameter_declaration& parameter_declaration::length(std::size_t count) {
   return *this;
 }
 
-std::string parameter_declaration::constraint_text() const {
-  std::string bounds;
+std::string parameter_declaration::bounds_text() const {
   if (lower_ && upper_)
-    bounds = std::string("in ") + (lower_->inclusive ? "[" : "(") + shortest_real(lower_->value) + ", " +
-             shortest_real(upper_->value) + (upper_->inclusive ? "]" : ")");
-  else if (lower_)
-    bounds = std::string(lower_->inclusive ? ">= " : "> ") + shortest_real(lower_->value);
-  else if (upper_)
-    bounds = std::string(upper_->inclusive ? "<= " : "< ") + shortest_real(upper_->value);
+    return std::string("in ") + (lower_->inclusive ? "[" : "(") + shortest_real(lower_->value) + ", " +
+           shortest_real(upper_->value) + (upper_->inclusive ? "]" : ")");
+  if (lower_) return std::string(lower_->inclusive ? ">= " : "> ") + shortest_real(lower_->value);
+  if (upper_) return std::string(upper_->inclusive ? "<= " : "< ") + shortest_real(upper_->value);
+  return "";
+}
+
+std::string parameter_declaration::constraint_text() const {
+  const std::string bounds = bounds_text();
   if (type_ == parameter_type::real_list) {
     std::string text = length_ ? std::to_string(*length_) + " elements" : "";
     if (!bounds.empty()) text += (text.empty() ? "elements " : " ") + bounds;
@@ -235,7 +235,7 @@ std::string parameter_declaration::violation(const parameter_value& value) const
       for (std::size_t i = 0; i < values.size(); ++i)
         if (outside(values[i]))
           return "element " + std::to_string(i + 1) + " (" + shortest_real(values[i]) +
-                 ") is out of range (must be " + constraint_text() + ")";
+                 ") is out of range (must be " + bounds_text() + ")";
       return "";
     }
     case parameter_type::string: {

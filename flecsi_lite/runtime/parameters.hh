@@ -99,6 +99,7 @@ public:
 private:
   friend class parameter_schema;
   parameter_declaration& set_default(parameter_value value);
+  std::string bounds_text() const;  // e.g. "in [0, 1]", "> 0"; "" without bounds
 
   struct bound {
     double value;

@@ -1,0 +1,41 @@
+// Checkpoints for restarts: one complete H5Part step (Step#0) of full-precision arrays plus the
+// run's state as root attributes, written under a temporary name and renamed when complete, so
+// that the previous checkpoint of that name survives any failure while the new one is written.
+#pragma once
+
+#include "flecsi_lite/io/attribute_value.hh"
+#include "flecsi_lite/io/h5part_reader.hh"
+#include "flecsi_lite/io/h5part_writer.hh"
+#include "flecsi_lite/io/step_info.hh"
+#include "flecsi_lite/runtime/context.hh"
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace flecsi_lite::io {
+
+/// What a restart needs besides the particle arrays (counters, next output time, ...).
+using run_state = std::map<std::string, attribute_value>;
+
+/// Root attribute "checkpoint" = 1 marks a checkpoint; state entry "n" is root attribute "state:n".
+inline constexpr const char* checkpoint_marker = "checkpoint";
+inline constexpr const char* checkpoint_state_prefix = "state:";
+
+/// Collective. Writes `path`: Step#0 with time/step/dt from `info` and the arrays that
+/// `write_arrays` writes (in their own type: doubles stay doubles), and `state`. An exception
+/// from `write_arrays` (on every rank) leaves the previous file of that name untouched.
+void write_checkpoint(const std::string& path, const step_info& info, const run_state& state,
+                      const std::function<void(h5part_writer&)>& write_arrays,
+                      MPI_Comm comm = runtime::communicator());
+
+struct checkpoint_contents {
+  step_info info;
+  run_state state;
+};
+
+/// Collective. The time and run state of a checkpoint; read its arrays with reader.read<T>(0, name).
+/// Throws file_error when the file is not a checkpoint.
+checkpoint_contents read_checkpoint(const h5part_reader& reader);
+
+} // namespace flecsi_lite::io

@@ -1,0 +1,314 @@
+// Collective H5Part reader over parallel HDF5 (see h5part_reader.hh).
+#include "flecsi_lite/io/h5part_reader.hh"
+
+#include "flecsi_lite/io/collective_agreement.hh"
+#include "flecsi_lite/io/h5part_layout.hh"
+#include "flecsi_lite/io/h5part_steps.hh"
+#include "flecsi_lite/io/hdf5_attributes.hh"
+#include "flecsi_lite/io/hdf5_errors.hh"
+#include "flecsi_lite/io/hdf5_parallel.hh"
+#include "flecsi_lite/util/edit_distance.hh"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+namespace flecsi_lite::io {
+
+namespace {
+int rank_of(MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  return rank;
+}
+int size_of(MPI_Comm comm) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  return size;
+}
+
+// Rank 0's look at the file before HDF5 opens it, for a precise message.
+void check_readable_hdf5(const std::string& path) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throw file_error("cannot open '" + path + "': no such file");
+  if (std::filesystem::is_directory(status))
+    throw file_error("cannot open '" + path + "': it is a directory, not an H5Part file");
+  std::ifstream probe(path, std::ios::binary);
+  if (!probe) throw file_error("cannot read '" + path + "': " + std::strerror(errno));
+  const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
+  if (is_hdf5 == 0) throw file_error("'" + path + "' is not an HDF5 file (no HDF5 signature)");
+  if (is_hdf5 < 0) throw file_error("cannot read '" + path + "'" + hdf5_reason());
+}
+
+std::string describe_steps(const std::vector<std::int64_t>& steps) {
+  if (steps.empty()) return "it has no steps";
+  if (steps.back() - steps.front() + 1 == static_cast<std::int64_t>(steps.size()))
+    return "it has steps " + std::to_string(steps.front()) + " to " + std::to_string(steps.back());
+  std::string list = "it has steps";
+  for (std::size_t k = 0; k < steps.size() && k < 8; ++k)
+    list += (k ? ", " : " ") + std::to_string(steps[k]);
+  return steps.size() > 8 ? list + ", ..." : list;
+}
+
+herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* names) {
+  static_cast<std::vector<std::string>*>(names)->emplace_back(name);
+  return 0;
+}
+} // namespace
+
+h5part_reader::h5part_reader(std::string path, MPI_Comm comm) : path_(std::move(path)), comm_(comm) {
+  hdf5_quiet_scope quiet;
+  agree(comm_, [&] {
+    if (rank_of(comm_) == 0) check_readable_hdf5(path_);
+  });
+  auto access = mpio_file_access(comm_);
+  file_ = file_handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, access.get()));
+  std::optional<failure_record> failed;
+  if (!file_)
+    failed = failure_record{failure::file, "'" + path_ + "' is truncated or corrupted: HDF5 cannot open it" +
+                                             hdf5_reason()};
+  try {
+    raise_if_any(comm_, failed);
+  } catch (...) {
+    file_.release();  // a parallel close on only the ranks that opened it would never return
+    throw;
+  }
+  agree(comm_, [&] { steps_ = h5part::step_indices(file_.get()); });
+}
+
+h5part_reader::~h5part_reader() {
+  hdf5_quiet_scope quiet;
+  file_.close();
+}
+
+bool h5part_reader::has_step(std::int64_t step) const {
+  return std::binary_search(steps_.begin(), steps_.end(), step);
+}
+
+std::int64_t h5part_reader::last_step() const {
+  if (steps_.empty()) throw missing_step_error("'" + path_ + "' has no steps");
+  return steps_.back();
+}
+
+std::string h5part_reader::describe_step(std::int64_t step) const {
+  return "step " + std::to_string(step) + " of '" + path_ + "'";
+}
+
+std::string h5part_reader::describe_dataset(std::int64_t step, const std::string& name) const {
+  return "dataset '" + name + "' of " + describe_step(step);
+}
+
+std::string h5part_reader::describe_attribute(std::int64_t step, const std::string& name) const {
+  return "attribute '" + name + "' of " + describe_step(step);
+}
+
+hdf5_handle h5part_reader::open_step(std::int64_t step) const {
+  if (!has_step(step))
+    throw missing_step_error("'" + path_ + "' has no step " + std::to_string(step) + " (" +
+                             describe_steps(steps_) + ")");
+  auto group = group_handle(H5Gopen2(file_.get(), h5part::step_group_name(step).c_str(), H5P_DEFAULT));
+  if (!group) throw file_error("cannot open " + describe_step(step) + hdf5_reason());
+  return group;
+}
+
+namespace {
+// Names of the datasets directly in `group`, in name order.
+std::vector<std::string> dataset_names(hid_t group, const std::string& where) {
+  std::vector<std::string> links, names;
+  hsize_t position = 0;
+  if (H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, &position, collect_link, &links) < 0)
+    throw file_error("cannot list the datasets of " + where + hdf5_reason());
+  for (const auto& link : links) {
+    auto object = object_handle(H5Oopen(group, link.c_str(), H5P_DEFAULT));
+    if (object && H5Iget_type(object.get()) == H5I_DATASET) names.push_back(link);
+  }
+  return names;
+}
+} // namespace
+
+hdf5_handle h5part_reader::open_dataset(std::int64_t step, const std::string& name) const {
+  auto group = open_step(step);
+  if (!name.empty() && H5Lexists(group.get(), name.c_str(), H5P_DEFAULT) > 0) {
+    auto object = object_handle(H5Oopen(group.get(), name.c_str(), H5P_DEFAULT));
+    if (object && H5Iget_type(object.get()) == H5I_DATASET) return object;
+  }
+  const auto names = dataset_names(group.get(), describe_step(step));
+  std::string message = describe_step(step) + " has no dataset '" + name + "'";
+  if (const auto near = util::nearest_name(name, names); !near.empty())
+    message += "; did you mean '" + near + "'?";
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : " ") + n;
+  throw missing_dataset_error(message + " (datasets: " + (list.empty() ? "none" : list) + ")");
+}
+
+std::uint64_t h5part_reader::checked_length(std::int64_t step) const {
+  if (auto known = step_lengths_.find(step); known != step_lengths_.end()) return known->second;
+  auto group = open_step(step);
+  std::optional<std::uint64_t> length;
+  std::string first;
+  for (const auto& name : dataset_names(group.get(), describe_step(step))) {
+    auto dataset = dataset_handle(H5Dopen2(group.get(), name.c_str(), H5P_DEFAULT));
+    auto space = dataspace_handle(dataset ? H5Dget_space(dataset.get()) : H5I_INVALID_HID);
+    if (!space) throw file_error("cannot open " + describe_dataset(step, name) + hdf5_reason());
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    hsize_t extent = 0;
+    if (rank != 1 || H5Sget_simple_extent_dims(space.get(), &extent, nullptr) != 1)
+      throw layout_error(describe_dataset(step, name) + " has " + std::to_string(rank) +
+                         " dimensions; H5Part datasets are 1-D");
+    if (length && *length != extent)
+      throw layout_error(describe_step(step) + " has datasets of different lengths: '" + first +
+                         "' has " + std::to_string(*length) + " particles, '" + name + "' has " +
+                         std::to_string(extent));
+    if (!length) length = extent, first = name;
+  }
+  step_lengths_[step] = length.value_or(0);
+  return length.value_or(0);
+}
+
+std::vector<std::string> h5part_reader::root_attribute_names() const {
+  hdf5_quiet_scope quiet;
+  std::vector<std::string> names;
+  agree(comm_, [&] { names = attribute_names(file_.get()); });
+  return names;
+}
+
+attribute_value h5part_reader::root_attribute(const std::string& name) const {
+  hdf5_quiet_scope quiet;
+  attribute_value value;
+  agree(comm_, [&] {
+    const std::string what = "root attribute '" + name + "' of '" + path_ + "'";
+    if (!has_attribute(file_.get(), name)) {
+      std::string message = "'" + path_ + "' has no root attribute '" + name + "'";
+      if (auto near = util::nearest_name(name, attribute_names(file_.get())); !near.empty())
+        message += "; did you mean '" + near + "'?";
+      throw missing_attribute_error(message);
+    }
+    value = read_attribute(file_.get(), name, what);
+  });
+  return value;
+}
+
+std::vector<std::string> h5part_reader::step_attribute_names(std::int64_t step) const {
+  hdf5_quiet_scope quiet;
+  std::vector<std::string> names;
+  agree(comm_, [&] { names = attribute_names(open_step(step).get()); });
+  return names;
+}
+
+attribute_value h5part_reader::step_attribute(std::int64_t step, const std::string& name) const {
+  hdf5_quiet_scope quiet;
+  attribute_value value;
+  agree(comm_, [&] {
+    auto group = open_step(step);
+    if (!has_attribute(group.get(), name)) {
+      std::string message = describe_step(step) + " has no attribute '" + name + "'";
+      if (auto near = util::nearest_name(name, attribute_names(group.get())); !near.empty())
+        message += "; did you mean '" + near + "'?";
+      throw missing_attribute_error(message);
+    }
+    value = read_attribute(group.get(), name, describe_attribute(step, name));
+  });
+  return value;
+}
+
+step_info h5part_reader::step_information(std::int64_t step) const {
+  hdf5_quiet_scope quiet;
+  step_info info;
+  agree(comm_, [&] {
+    auto group = open_step(step);
+    const auto real = [&](const char* name, double fallback) {
+      if (!has_attribute(group.get(), name)) return fallback;
+      return attribute_as<double>(read_attribute(group.get(), name, describe_attribute(step, name)),
+                                  describe_attribute(step, name));
+    };
+    info.time = real(h5part::attribute::time, real(h5part::attribute::time_value, 0.0));
+    info.dt = real(h5part::attribute::dt, 0.0);
+    info.step = has_attribute(group.get(), h5part::attribute::step)
+      ? attribute_as<std::int64_t>(read_attribute(group.get(), h5part::attribute::step,
+                                                  describe_attribute(step, h5part::attribute::step)),
+                                   describe_attribute(step, h5part::attribute::step))
+      : step;
+  });
+  return info;
+}
+
+std::vector<std::string> h5part_reader::datasets(std::int64_t step) const {
+  hdf5_quiet_scope quiet;
+  std::vector<std::string> names;
+  agree(comm_, [&] { names = dataset_names(open_step(step).get(), describe_step(step)); });
+  return names;
+}
+
+bool h5part_reader::has_dataset(std::int64_t step, const std::string& name) const {
+  const auto names = datasets(step);
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+element_type h5part_reader::dataset_type(std::int64_t step, const std::string& name) const {
+  hdf5_quiet_scope quiet;
+  element_type type = element_type::unsupported;
+  agree(comm_, [&] {
+    auto dataset = open_dataset(step, name);
+    auto stored = datatype_handle(H5Dget_type(dataset.get()));
+    if (!stored) throw file_error("cannot inspect " + describe_dataset(step, name) + hdf5_reason());
+    type = classify(stored.get());
+  });
+  return type;
+}
+
+std::uint64_t h5part_reader::particle_count(std::int64_t step) const {
+  hdf5_quiet_scope quiet;
+  std::uint64_t length = 0;
+  agree(comm_, [&] { length = checked_length(step); });
+  return length;
+}
+
+slice h5part_reader::block(std::int64_t step) const {
+  return block_slice(particle_count(step), rank_of(comm_), size_of(comm_));
+}
+
+void h5part_reader::read_into(std::int64_t step, const std::string& name, slice part,
+                              element_type type, void* out) const {
+  hdf5_quiet_scope quiet;
+  hdf5_handle dataset, file_space, memory_space;
+  std::uint64_t length = 0;
+  agree(comm_, [&] {
+    dataset = open_dataset(step, name);
+    length = checked_length(step);
+    auto stored = datatype_handle(H5Dget_type(dataset.get()));
+    if (!stored) throw file_error("cannot inspect " + describe_dataset(step, name) + hdf5_reason());
+    if (classify(stored.get()) != type)
+      throw element_type_error(describe_dataset(step, name) + " holds " +
+                               describe_datatype(stored.get()) + " values, not " +
+                               element_type_name(type));
+    if (part.offset > length || part.count > length - part.offset)
+      throw slice_error(describe_dataset(step, name) + " has " + std::to_string(length) +
+                        " particles; rank " + std::to_string(rank_of(comm_)) + " asked for [" +
+                        std::to_string(part.offset) + ", " + std::to_string(part.offset + part.count) + ")");
+    const hsize_t offset = part.offset, count = part.count;
+    file_space = dataspace_handle(H5Dget_space(dataset.get()));
+    memory_space = dataspace_handle(H5Screate_simple(1, &count, nullptr));
+    const herr_t selected = count > 0
+      ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr)
+      : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
+    if (!file_space || !memory_space || selected < 0)
+      throw io_error(failure::system, "cannot select this rank's part of " +
+                                        describe_dataset(step, name) + hdf5_reason());
+  });
+  // Collective: every rank takes part, those that read nothing with an empty selection. A
+  // dataset without any element has no storage to read from (the same on every rank).
+  auto transfer = collective_transfer();
+  char nothing = 0;
+  std::optional<failure_record> failed;
+  if (length > 0 &&
+      H5Dread(dataset.get(), memory_type(type), memory_space.get(), file_space.get(), transfer.get(),
+              part.count > 0 ? out : &nothing) < 0)
+    failed = failure_record{failure::file, "cannot read " + describe_dataset(step, name) + hdf5_reason()};
+  raise_if_any(comm_, failed);
+}
+
+} // namespace flecsi_lite::io

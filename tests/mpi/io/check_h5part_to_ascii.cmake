@@ -1,0 +1,62 @@
+# Checks the h5part_to_ascii tool on files that the 1-rank I/O test writes: default columns in
+# splash's order, a chosen step and columns written to a file, clear errors; and, when splash is
+# installed, that `splash -f ascii` reads the time, the columns and every particle.
+# Usage: cmake -DTOOL=<h5part_to_ascii> [-DSPLASH=<splash>] -P check_h5part_to_ascii.cmake
+
+function(run_tool)
+  execute_process(COMMAND ${TOOL} ${ARGN} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+  set(out "${out}" PARENT_SCOPE)
+  set(err "${err}" PARENT_SCOPE)
+  set(rc "${rc}" PARENT_SCOPE)
+endfunction()
+
+function(require text pattern what)
+  if(NOT "${text}" MATCHES "${pattern}")
+    message(FATAL_ERROR "${what}: expected to match '${pattern}', got:\n${text}")
+  endif()
+endfunction()
+
+# Default columns: x y z vx vy vz m rho P u h id, in that order, then one row per particle.
+run_tool(mpi_io_sph_columns_1ranks.h5part)
+require("${rc}" "^0$" "default export exit code")
+require("${out}" "^# 3\\.1250000000000000e-01  is the time of Step#0 \\(iteration 40\\)" "time line")
+require("${out}" "\n#[ ]+x[ ]+y[ ]+z[ ]+vx[ ]+vy[ ]+vz[ ]+m[ ]+rho[ ]+P[ ]+u[ ]+h[ ]+id\n" "default labels")
+string(REGEX MATCHALL "\n  [^#\n]+" rows "${out}")
+list(LENGTH rows row_count)
+require("${row_count}" "^4$" "one row per particle")
+
+# A chosen step and columns, to a file that appears complete.
+file(REMOVE step1.dat)
+run_tool(--step 1 --columns x,id mpi_io_round_trip_1ranks.h5part --output step1.dat)
+require("${rc}" "^0$" "export to a file")
+file(READ step1.dat text)
+require("${text}" "^# 2\\.6785714285714285e-01  is the time of Step#1" "time of step 1")
+require("${text}" "\n#[ ]+x[ ]+id\n  1\\.0033333333333333e\\+02[ ]+1099511627777\n" "first row of step 1")
+if(EXISTS step1.dat.partial)
+  message(FATAL_ERROR "the partial output file was left behind")
+endif()
+
+# Errors name what is missing; usage errors exit with 2.
+run_tool(no_such_file.h5part)
+require("${rc}:${err}" "^1:h5part_to_ascii: cannot open 'no_such_file.h5part': no such file" "missing file")
+run_tool(--step 99 mpi_io_round_trip_1ranks.h5part)
+require("${rc}:${err}" "^1:.*has no step 99 \\(it has steps 0 to 2\\)" "missing step")
+run_tool(--columns x,ids mpi_io_round_trip_1ranks.h5part)
+require("${rc}:${err}" "^1:.*has no dataset 'ids'; did you mean 'id'\\?" "missing column")
+run_tool(mpi_io_errors_truncated_1ranks.h5part)
+require("${rc}:${err}" "^1:.*is truncated or corrupted" "truncated file")
+run_tool(--step abc mpi_io_round_trip_1ranks.h5part)
+require("${rc}:${err}" "^2:.*--step takes a step index" "bad step")
+
+# Splash itself, when installed, reads the time, 12 columns and 4 particles.
+if(SPLASH AND EXISTS "${SPLASH}")
+  run_tool(mpi_io_sph_columns_1ranks.h5part --output sph.dat)
+  file(REMOVE sph.dat.ascii)
+  execute_process(COMMAND ${SPLASH} -f ascii to ascii sph.dat INPUT_FILE /dev/null
+                  OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+  require("${rc}" "^0$" "splash exit code (${err})")
+  require("${out}" "setting time = +0\\.3125" "splash time")
+  require("${out}" "npts = 4, ncols = 12, skipped 2 header lines" "splash columns")
+  file(READ sph.dat.ascii converted)
+  require("${converted}" "# x +y +z +v_?x +v_?y +v_?z +m +rho +P +u +h +id" "splash labels")
+endif()
