@@ -5,6 +5,7 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$here/scripts/install-deps.sh"
 build="${FLECSPH_BUILD_DIR:-$here/build}"
-cmake -S "$here" -B "$build" -G Ninja "$@" >"$build.configure.log" 2>&1 || {
-  cat "$build.configure.log"; exit 1; }
+mkdir -p "$build"
+cmake -S "$here" -B "$build" -G Ninja "$@" >"$build/configure.log" 2>&1 || {
+  cat "$build/configure.log"; exit 1; }
 cmake --build "$build" -j "$(nproc)"
