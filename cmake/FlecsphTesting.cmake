@@ -14,6 +14,9 @@ if(_flecsph_mpiexec_version MATCHES "Open MPI|OpenRTE")
   endif()
 endif()
 
+# The same flags as one string, for tests run through a shell.
+string(REPLACE ";" " " FLECSPH_MPIEXEC_FLAGS_STRING "${FLECSPH_MPIEXEC_FLAGS}")
+
 # Quiet, reproducible test environment: no thread binding warnings from Kokkos, no
 # shared-memory single-copy errors from Open MPI inside containers.
 set(FLECSPH_TEST_ENVIRONMENT
