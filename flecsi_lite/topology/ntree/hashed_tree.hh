@@ -7,6 +7,7 @@
 #include "flecsi_lite/topology/ntree/keys.hh"
 #include "flecsi_lite/topology/ntree/multipole.hh"
 #include "flecsi_lite/topology/ntree/node_table.hh"
+#include "flecsi_lite/topology/ntree/search_node.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
 #include <algorithm>
@@ -78,9 +79,7 @@ public:
     }
     // The last pass found no children; the begin it pushed is the end of the deepest level.
 
-    std::vector<key_type> node_keys(nodes_.size());
-    for (std::size_t i = 0; i < nodes_.size(); ++i) node_keys[i] = nodes_[i].key;
-    table_.build(node_keys.data(), node_keys.size());
+    table_.build(nodes_.size(), [this](std::size_t i) { return nodes_[i].key; });
     refit(x, m, h);
   }
 
@@ -91,6 +90,7 @@ public:
     m_ = m;
     h_ = h;
     quadrupoles_.assign(options_.quadrupole ? nodes_.size() : 0, quadrupole<D>{});
+    search_nodes_.resize(nodes_.size());
     for (int l = depth(); l >= 0; --l)
       host_for("ntree::hashed_tree::refit", level_size(l),
                [this, l](std::size_t i) { compute_node(level_begin_[l] + i); });
@@ -99,6 +99,8 @@ public:
   /// Number of particles.
   std::size_t size() const { return nodes_.empty() ? 0 : nodes_[0].end; }
   const std::vector<tree_node<D>>& nodes() const { return nodes_; }
+  /// The nodes' compact copies for neighbour-search walks (same indices as nodes()).
+  const std::vector<search_node<D>>& search_nodes() const { return search_nodes_; }
   const tree_node<D>& node(std::uint32_t index) const { return nodes_[index]; }
   const tree_node<D>& root() const { return nodes_[0]; }
   /// Deepest level holding a node.
@@ -107,7 +109,9 @@ public:
   std::uint32_t level_begin(int l) const { return level_begin_[l]; }
 
   /// Index of the node with `key`, or npos (2HOT's key lookup).
-  std::uint32_t find(key_type key) const { return table_.find(key); }
+  std::uint32_t find(key_type key) const {
+    return table_.find(key, [this](std::size_t i) { return nodes_[i].key; });
+  }
 
   bool has_quadrupoles() const { return !quadrupoles_.empty(); }
   const quadrupole<D>& node_quadrupole(std::uint32_t index) const {
@@ -122,7 +126,7 @@ public:
 
   /// Memory held by the tree (nodes, hash table, quadrupoles, level index).
   std::size_t bytes() const {
-    return nodes_.size() * sizeof(tree_node<D>) + table_.bytes() +
+    return nodes_.size() * (sizeof(tree_node<D>) + sizeof(search_node<D>)) + table_.bytes() +
            quadrupoles_.size() * sizeof(quadrupole<D>) +
            level_begin_.size() * sizeof(std::uint32_t);
   }
@@ -208,6 +212,16 @@ private:
     } else {
       node.center = node.size() > 0 ? node.bounds.center() : point<D>{};
     }
+    search_node<D>& compact = search_nodes_[index];
+    for (int k = 0; k < D; ++k) {
+      compact.lo[k] = float_below(node.bounds.lo[k]);
+      compact.hi[k] = float_above(node.bounds.hi[k]);
+    }
+    compact.h_max = float_above(node.h_max);
+    compact.begin = node.begin;
+    compact.end = node.end;
+    compact.first_child = node.first_child;
+    compact.child_count = node.child_count;
     if (quadrupoles_.empty()) return;
 
     quadrupole<D>& q = quadrupoles_[index];
@@ -228,6 +242,7 @@ private:
 
   tree_options options_;
   std::vector<tree_node<D>> nodes_;
+  std::vector<search_node<D>> search_nodes_;
   std::vector<std::uint32_t> level_begin_;
   std::vector<quadrupole<D>> quadrupoles_;
   node_table table_;

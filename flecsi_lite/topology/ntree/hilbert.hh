@@ -19,25 +19,22 @@ constexpr std::array<std::uint64_t, D> hilbert_transpose(std::array<std::uint64_
                                                          int bits) {
   assert(bits >= 0 && bits <= 63 / D);
   if (bits == 0) return x;
-  const std::uint64_t top = std::uint64_t{1} << (bits - 1);
-  // Inverse undo of the excess work: rotate/reflect lower bits by each higher bit.
-  for (std::uint64_t q = top; q > 1; q >>= 1) {
-    const std::uint64_t p = q - 1;
+  // Inverse undo of the excess work: rotate/reflect lower bits by each higher bit. Written
+  // without branches (masks select "invert" or "exchange"): the bits are data, not patterns.
+  for (int level = bits - 1; level > 0; --level) {
+    const std::uint64_t low = (std::uint64_t{1} << level) - 1;
     for (int i = 0; i < D; ++i) {
-      if (x[i] & q) {
-        x[0] ^= p; // invert
-      } else {
-        const std::uint64_t t = (x[0] ^ x[i]) & p; // exchange
-        x[0] ^= t;
-        x[i] ^= t;
-      }
+      const std::uint64_t set = 0 - (x[i] >> level & 1);
+      const std::uint64_t exchange = (x[0] ^ x[i]) & low & ~set;
+      x[0] ^= (low & set) | exchange; // invert when the bit is set, else exchange
+      x[i] ^= exchange;
     }
   }
   // Gray encode.
   for (int i = 1; i < D; ++i) x[i] ^= x[i - 1];
   std::uint64_t t = 0;
-  for (std::uint64_t q = top; q > 1; q >>= 1)
-    if (x[D - 1] & q) t ^= q - 1;
+  for (int level = bits - 1; level > 0; --level)
+    t ^= ((std::uint64_t{1} << level) - 1) & (0 - (x[D - 1] >> level & 1));
   for (int i = 0; i < D; ++i) x[i] ^= t;
   return x;
 }
@@ -48,22 +45,18 @@ constexpr std::array<std::uint64_t, D> hilbert_untranspose(std::array<std::uint6
                                                            int bits) {
   assert(bits >= 0 && bits <= 63 / D);
   if (bits == 0) return x;
-  const std::uint64_t end = std::uint64_t{2} << (bits - 1);
   // Gray decode by H ^ (H / 2).
   const std::uint64_t t = x[D - 1] >> 1;
   for (int i = D - 1; i > 0; --i) x[i] ^= x[i - 1];
   x[0] ^= t;
-  // Undo the excess work.
-  for (std::uint64_t q = 2; q != end; q <<= 1) {
-    const std::uint64_t p = q - 1;
+  // Undo the excess work, lowest bit first.
+  for (int level = 1; level < bits; ++level) {
+    const std::uint64_t low = (std::uint64_t{1} << level) - 1;
     for (int i = D - 1; i >= 0; --i) {
-      if (x[i] & q) {
-        x[0] ^= p;
-      } else {
-        const std::uint64_t s = (x[0] ^ x[i]) & p;
-        x[0] ^= s;
-        x[i] ^= s;
-      }
+      const std::uint64_t set = 0 - (x[i] >> level & 1);
+      const std::uint64_t exchange = (x[0] ^ x[i]) & low & ~set;
+      x[0] ^= (low & set) | exchange;
+      x[i] ^= exchange;
     }
   }
   return x;

@@ -8,6 +8,7 @@
 #include "flecsi_lite/topology/ntree/periodic.hh"
 #include "flecsi_lite/topology/ntree/search_dispatch.hh"
 
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 
@@ -22,43 +23,51 @@ void walk_target(const hashed_tree<D>& tree,
                  const std::array<point<D>, shift_code_count<D>>& shifts, std::uint32_t allowed,
                  const point<D>& x, double h_target, double support, Visit&& visit) {
   if (tree.size() == 0) return;
-  const tree_node<D>* nodes = tree.nodes().data();
+  const search_node<D>* nodes = tree.search_nodes().data();
   const point<D>* positions = tree.positions();
   const double* h = tree.smoothing_lengths();
   const double target_radius = support * h_target;
 
-  walk_entry stack[walk_stack_size<D>];
-  int top = 0;
-  stack[top++] = walk_entry{0, Periodic ? allowed : 0u};
-  while (top > 0) {
-    const walk_entry entry = stack[--top];
-    const tree_node<D>& node = nodes[entry.node];
-    const double reach = Kind == interaction::gather
-                           ? target_radius
-                           : std::max(target_radius, support * node.h_max);
+  // The image shifts (among `candidates`) under which `node` may hold a neighbour.
+  const auto reachable = [&](const search_node<D>& node, std::uint32_t candidates) {
+    const double reach = interaction_radius<Kind>(1.0, target_radius, support * node.h_max);
     const double reach_squared = reach * reach;
-    std::uint32_t pass = 0;
     if constexpr (Periodic) {
-      for (std::uint32_t rest = entry.shifts; rest != 0; rest &= rest - 1) {
+      std::uint32_t pass = 0;
+      for (std::uint32_t rest = candidates; rest != 0; rest &= rest - 1) {
         const int code = __builtin_ctz(rest);
-        if (distance_squared<D>(node.bounds.shifted(shifts[code]), x) < reach_squared)
+        if (node.template distance_squared_to<true>(x, shifts[code]) < reach_squared)
           pass |= std::uint32_t{1} << code;
       }
-      if (pass == 0) continue;
+      return pass;
     } else {
-      if (!(distance_squared<D>(node.bounds, x) < reach_squared)) continue;
+      return node.template distance_squared_to<false>(x, shifts[0]) < reach_squared
+               ? candidates
+               : 0u;
     }
+  };
 
+  walk_entry stack[walk_stack_size<D>];
+  int top = 0;
+  const std::uint32_t root_pass = reachable(nodes[0], Periodic ? allowed : 1u);
+  if (root_pass != 0) stack[top++] = walk_entry{0, root_pass};
+  while (top > 0) {
+    const walk_entry entry = stack[--top];
+    const search_node<D>& node = nodes[entry.node];
     if (!node.is_leaf()) {
-      // Children pushed last-first so that they are popped in key (= index) order.
-      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;)
+      // Last child first, so that children are popped in key (= index) order.
+      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) {
+        const std::uint32_t pass = reachable(nodes[c], entry.shifts);
+        if (pass == 0) continue;
+        assert(top < walk_stack_size<D>);
         stack[top++] = walk_entry{c, pass};
+      }
       continue;
     }
     for (std::uint32_t b = node.begin; b < node.end; ++b) {
       const double radius = interaction_radius<Kind>(support, h_target, h[b]);
       if constexpr (Periodic) {
-        for (std::uint32_t rest = pass; rest != 0; rest &= rest - 1) {
+        for (std::uint32_t rest = entry.shifts; rest != 0; rest &= rest - 1) {
           const int code = __builtin_ctz(rest);
           point<D> image;
           for (int k = 0; k < D; ++k) image[k] = positions[b][k] + shifts[code][k];

@@ -1,0 +1,344 @@
+// The two-step group walk of FleCSPH (Loiseau, thesis ch. 2, Algorithm 2; Barnes 1990): descend
+// to groups of nearby particles, build one interaction list per group with a box-distance
+// criterion, then apply the exact pair criterion to every target of the group with that list.
+#pragma once
+
+#include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/radius_search.hh"
+#include "flecsi_lite/topology/ntree/search_dispatch.hh"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace flecsi_lite::topology::ntree {
+
+/// A group is a node whose particles share one interaction list: the first node on the way
+/// down that is a leaf, or that holds at most max_group_size particles or (when
+/// max_group_mass > 0) weighs at most max_group_mass (the seed's tmass), and, when
+/// max_group_extent > 0, whose box is no wider than max_group_extent times its largest
+/// interaction radius (support * h_max): sparse nodes, whose list would be long, are split.
+/// A group whose interaction list comes out longer than max_list_length falls back to one
+/// tree walk per target (same result): near steep density gradients, the box of a few sparse
+/// targets enlarged by their large reach can take in thousands of particles of the dense side.
+struct group_options {
+  std::size_t max_group_size = 32;
+  double max_group_mass = 0;
+  double max_group_extent = 0;
+  std::size_t max_list_length = 2048;
+};
+
+/// The interaction list of a group is every source image (x_b + shift) that may lie within
+/// reach of some target of the group: within support * max(h of targets) of the targets' box
+/// (and, for symmetric searches, within support * h_b). It is built in ascending (b, shift)
+/// order and stored as structure of arrays so the per-target loop streams through it.
+///
+/// A group_walk object keeps its workspaces between calls (no allocation once warm); one
+/// object must not be used by two threads at once.
+template<int D>
+class group_walk {
+public:
+  explicit group_walk(search_options search = {}, group_options groups = {})
+    : search_(search), grouping_(groups) {}
+
+  const search_options& options() const { return search_; }
+  const group_options& grouping() const { return grouping_; }
+
+  /// Calls apply(a, b) or apply(a, b, shift) for every target a and each neighbour b, in
+  /// parallel over groups: the calls for one target come from one thread, in ascending b.
+  template<class F>
+  void for_each_neighbour(const hashed_tree<D>& tree, const domain<D>& space, F&& apply) {
+    check_functor<D, std::remove_reference_t<F>>(space);
+    const auto shifts = space.shift_table();
+    run(tree, space, [](std::size_t) {},
+        [&](std::size_t, workspace& work, auto kind, auto periodic) {
+          walk_group<decltype(kind)::value, decltype(periodic)::value>(
+            tree, shifts, space.allowed_shifts(), work,
+            [&](std::size_t a, std::size_t b, shift_code code) {
+              call_apply<D>(apply, a, b, code, shifts);
+            });
+        });
+  }
+
+  /// Neighbour lists of all targets (shift codes too when the domain is periodic).
+  void find_neighbours(const hashed_tree<D>& tree, const domain<D>& space,
+                       neighbour_lists& out) {
+    const bool periodic_domain = space.any_periodic();
+    const auto shifts = space.shift_table();
+    std::size_t* counts = nullptr;
+    const auto prepare = [&](std::size_t chunks) {
+      builder_.start(tree.size(), chunks, out);
+      // Chunk c works on consecutive groups, so its targets start at its first group's begin.
+      for (std::size_t c = 0; c < chunks && !groups_.empty(); ++c)
+        builder_[c].first_target = tree.node(groups_[groups_.size() * c / chunks]).begin;
+      counts = out.offsets.data();
+    };
+    run(tree, space, prepare,
+        [&](std::size_t chunk, workspace& work, auto kind, auto periodic) {
+          auto& part = builder_[chunk];
+          walk_group<decltype(kind)::value, decltype(periodic)::value>(
+            tree, shifts, space.allowed_shifts(), work,
+            [&](std::size_t a, std::size_t b, shift_code code) {
+              part.neighbours.push_back(static_cast<std::uint32_t>(b));
+              if (periodic_domain) part.shifts.push_back(code);
+              ++counts[a];
+            });
+        });
+    builder_.finish(out, periodic_domain);
+  }
+
+  /// The groups (node indices, in ascending particle order) of the last walk.
+  const std::vector<std::uint32_t>& groups() const { return groups_; }
+
+  /// Total length of the interaction lists of the last walk (a cost diagnostic).
+  std::size_t interaction_list_entries() const {
+    std::size_t total = 0;
+    for (const workspace& work : workspaces_) total += work.entries;
+    return total;
+  }
+
+private:
+  // The interaction list lives in the first `length` entries of the arrays, which only grow
+  // (geometrically), so that entries can be written before knowing whether they are kept.
+  struct workspace {
+    std::size_t group = 0;   // index in groups_ being walked
+    std::size_t entries = 0; // interaction-list entries built by this workspace
+    std::size_t length = 0;  // entries of the current list
+    std::vector<std::uint32_t> index;
+    std::vector<shift_code> shift;
+    std::array<std::vector<double>, D> position;
+    std::vector<double> h;
+    std::vector<std::uint32_t> hits; // per-target scratch: list entries that are neighbours
+    std::vector<double> distance;    // per-target scratch: squared distances to the list
+
+    void reserve(std::size_t size) {
+      if (index.size() >= size) return;
+      const std::size_t grown = std::max(size, 2 * index.size());
+      index.resize(grown);
+      shift.resize(grown);
+      for (auto& axis : position) axis.resize(grown);
+      h.resize(grown);
+      hits.resize(grown);
+      distance.resize(grown);
+    }
+  };
+
+  // Finds the groups, then calls body(chunk, workspace, kind, periodic) for every group, in
+  // parallel over chunks of consecutive groups. `prepare(chunks)` runs first, once.
+  template<class Prepare, class Body>
+  void run(const hashed_tree<D>& tree, const domain<D>& space, Prepare&& prepare, Body&& body) {
+    check_periodic_reach(tree, space, search_.support);
+    find_groups(tree);
+    const std::size_t group_count = groups_.size();
+    const std::size_t chunks = chunk_count_for(group_count);
+    if (workspaces_.size() < chunks) workspaces_.resize(chunks);
+    for (workspace& work : workspaces_) work.entries = 0;
+    prepare(chunks);
+    if (group_count == 0) return;
+    dispatch_search(search_.kind, space.any_periodic(), [&](auto kind, auto periodic) {
+      host_for_dynamic("ntree::group_walk", chunks, [&](std::size_t c) {
+        workspace& work = workspaces_[c];
+        for (std::size_t g = group_count * c / chunks; g < group_count * (c + 1) / chunks; ++g) {
+          work.group = g;
+          body(c, work, kind, periodic);
+        }
+      });
+    });
+  }
+
+  // Step 1 (FIND_NODES): the groups, by a depth-first descent in key order.
+  void find_groups(const hashed_tree<D>& tree) {
+    groups_.clear();
+    if (tree.size() == 0) return;
+    std::vector<std::uint32_t>& stack = group_stack_;
+    stack.assign(1, 0);
+    while (!stack.empty()) {
+      const std::uint32_t index = stack.back();
+      stack.pop_back();
+      const tree_node<D>& node = tree.node(index);
+      const bool small = node.size() <= grouping_.max_group_size ||
+                         (grouping_.max_group_mass > 0 && node.mass <= grouping_.max_group_mass);
+      const bool compact =
+        grouping_.max_group_extent <= 0 ||
+        node.bounds.max_extent() <= grouping_.max_group_extent * search_.support * node.h_max;
+      if (node.is_leaf() || (small && compact)) {
+        groups_.push_back(index);
+        continue;
+      }
+      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;)
+        stack.push_back(c);
+    }
+  }
+
+  // Steps 2 and 3 (INTERACTION_LIST, APPLY_SUB_TREE) for the group work.group: calls
+  // emit(a, b, code) for every target a of the group and each neighbour, ascending b per a.
+  template<interaction Kind, bool Periodic, class Emit>
+  void walk_group(const hashed_tree<D>& tree,
+                  const std::array<point<D>, shift_code_count<D>>& shifts,
+                  std::uint32_t allowed, workspace& work, Emit&& emit) const {
+    const tree_node<D>& group = tree.node(groups_[work.group]);
+    const point<D>* positions = tree.positions();
+    const double* h = tree.smoothing_lengths();
+    const double support = search_.support;
+
+    // The targets' own box and largest h bound every target's reach.
+    box<D> targets = box<D>::empty();
+    double h_targets = 0;
+    for (std::uint32_t a = group.begin; a < group.end; ++a) {
+      if (!search_.is_target(a)) continue;
+      targets.extend(positions[a]);
+      h_targets = std::max(h_targets, h[a]);
+    }
+    if (targets.is_empty()) return;
+    build_list<Kind, Periodic>(tree, shifts, allowed, targets, support * h_targets, work);
+    if (work.length > grouping_.max_list_length) {
+      for (std::uint32_t a = group.begin; a < group.end; ++a) {
+        if (!search_.is_target(a)) continue;
+        walk_target<D, Kind, Periodic>(tree, shifts, allowed, positions[a], h[a], support,
+                                       [&](std::size_t b, shift_code c) { emit(a, b, c); });
+      }
+      return;
+    }
+
+    const std::size_t length = work.length;
+    const std::uint32_t* index = work.index.data();
+    const shift_code* code = work.shift.data();
+    const double* source_h = work.h.data();
+    std::uint32_t* __restrict hits = work.hits.data();
+    double* __restrict distance = work.distance.data();
+    std::array<const double*, D> source_x;
+    for (int k = 0; k < D; ++k) source_x[k] = work.position[k].data();
+    for (std::uint32_t a = group.begin; a < group.end; ++a) {
+      if (!search_.is_target(a)) continue;
+      const point<D> x = positions[a];
+      const double h_a = h[a];
+      // Squared distances to the whole list (a vectorisable loop), then a branch-free
+      // compaction of the hits: the criterion's outcome is data the branch predictor cannot
+      // learn, so branching on it per entry would cost more than the arithmetic.
+      for (std::size_t j = 0; j < length; ++j) {
+        double r2 = 0;
+        for (int k = 0; k < D; ++k) {
+          const double d = x[k] - source_x[k][j];
+          r2 += d * d;
+        }
+        distance[j] = r2;
+      }
+      std::size_t count = 0;
+      if constexpr (Kind == interaction::gather) {
+        const double radius = interaction_radius<Kind>(support, h_a, 0.0);
+        const double radius_squared = radius * radius; // within_radius, hoisted
+        for (std::size_t j = 0; j < length; ++j) {
+          hits[count] = static_cast<std::uint32_t>(j);
+          count += distance[j] < radius_squared;
+        }
+      } else {
+        for (std::size_t j = 0; j < length; ++j) {
+          hits[count] = static_cast<std::uint32_t>(j);
+          count += within_radius(distance[j], interaction_radius<Kind>(support, h_a, source_h[j]));
+        }
+      }
+      for (std::size_t i = 0; i < count; ++i)
+        emit(a, index[hits[i]], Periodic ? code[hits[i]] : zero_shift<D>);
+    }
+  }
+
+  // The group's interaction list (INTERACTION_LIST): a node is opened while its box, seen
+  // under some image shift, is within reach of the targets' box; leaves add their particles
+  // that are themselves within reach of that box. Children are tested before being pushed.
+  template<interaction Kind, bool Periodic>
+  void build_list(const hashed_tree<D>& tree,
+                  const std::array<point<D>, shift_code_count<D>>& shifts,
+                  std::uint32_t allowed, const box<D>& targets, double group_radius,
+                  workspace& work) const {
+    const search_node<D>* nodes = tree.search_nodes().data();
+    const point<D>* positions = tree.positions();
+    const double* h = tree.smoothing_lengths();
+    const double support = search_.support;
+
+    // The image shifts (among `candidates`) under which `node` is within reach.
+    const auto reachable = [&](const search_node<D>& node, std::uint32_t candidates) {
+      const double reach = interaction_radius<Kind>(1.0, group_radius, support * node.h_max);
+      const double reach_squared = reach * reach;
+      if constexpr (Periodic) {
+        std::uint32_t pass = 0;
+        for (std::uint32_t rest = candidates; rest != 0; rest &= rest - 1) {
+          const int c = __builtin_ctz(rest);
+          if (node.template distance_squared_to<true>(targets, shifts[c]) < reach_squared)
+            pass |= std::uint32_t{1} << c;
+        }
+        return pass;
+      } else {
+        return node.template distance_squared_to<false>(targets, shifts[0]) < reach_squared
+                 ? candidates
+                 : 0u;
+      }
+    };
+
+    std::size_t length = 0;
+    walk_entry stack[walk_stack_size<D>];
+    int top = 0;
+    const std::uint32_t root_pass = reachable(nodes[0], Periodic ? allowed : 1u);
+    if (root_pass != 0) stack[top++] = walk_entry{0, root_pass};
+    while (top > 0) {
+      const walk_entry entry = stack[--top];
+      const search_node<D>& node = nodes[entry.node];
+      if (!node.is_leaf()) {
+        // Last child first, so that children are popped in key (= index) order.
+        for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) {
+          // Pushed unconditionally, kept only if within reach: no branch to mispredict.
+          const std::uint32_t pass = reachable(nodes[c], entry.shifts);
+          assert(top < walk_stack_size<D>);
+          stack[top] = walk_entry{c, pass};
+          top += pass != 0;
+        }
+        continue;
+      }
+      const std::size_t images = Periodic ? __builtin_popcount(entry.shifts) : 1;
+      work.reserve(length + images * (node.end - node.begin));
+      std::uint32_t* __restrict index = work.index.data();
+      shift_code* __restrict code = work.shift.data();
+      double* __restrict source_h = work.h.data();
+      std::array<double*, D> source_x;
+      for (int k = 0; k < D; ++k) source_x[k] = work.position[k].data();
+      // Every candidate is written, and kept by advancing `length` only if within reach.
+      const auto keep = [&](std::uint32_t b, shift_code c, const point<D>& image, bool within) {
+        index[length] = b;
+        code[length] = c;
+        for (int k = 0; k < D; ++k) source_x[k][length] = image[k];
+        source_h[length] = h[b];
+        length += within;
+      };
+      for (std::uint32_t b = node.begin; b < node.end; ++b) {
+        const double reach_b = interaction_radius<Kind>(1.0, group_radius, support * h[b]);
+        if constexpr (Periodic) {
+          for (std::uint32_t rest = entry.shifts; rest != 0; rest &= rest - 1) {
+            const int c = __builtin_ctz(rest);
+            point<D> image;
+            for (int k = 0; k < D; ++k) image[k] = positions[b][k] + shifts[c][k];
+            keep(b, static_cast<shift_code>(c), image,
+                 within_radius(distance_squared<D>(targets, image), reach_b));
+          }
+        } else {
+          keep(b, zero_shift<D>, positions[b],
+               within_radius(distance_squared<D>(targets, positions[b]), reach_b));
+        }
+      }
+    }
+    work.length = length;
+    work.entries += length;
+  }
+
+  search_options search_;
+  group_options grouping_;
+  std::vector<std::uint32_t> groups_;
+  std::vector<std::uint32_t> group_stack_;
+  std::vector<workspace> workspaces_;
+  neighbour_list_builder builder_;
+};
+
+} // namespace flecsi_lite::topology::ntree
