@@ -1,0 +1,145 @@
+// The local tree of a distributed ntree: a hashed tree (Warren & Salmon 1993) over this rank's
+// owned and ghost particles together, built on a copy sorted by (key, id) because owned and ghost
+// particles interleave in key order, with the map between sorted and storage indices. Searches
+// take owned targets and answer in storage indices, neighbours in ascending (key, id) order.
+#pragma once
+
+#include "flecsi_lite/topology/ntree/distributed/sorted_runs.hh"
+#include "flecsi_lite/topology/ntree/group_walk.hh"
+#include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/host_parallel.hh"
+#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/ordering.hh"
+#include "flecsi_lite/topology/ntree/periodic.hh"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace flecsi_lite::topology::ntree {
+
+/// Vocabulary: STORAGE index = position in the topology's fields (owned [0, owned), then
+/// ghosts); SORTED index = position in the (key, id) order of owned and ghost particles
+/// together, which is the tree's particle order.
+template<int D>
+class local_tree {
+public:
+  /// Builds the tree of `total` particles, the first `owned` of them owned, from their storage
+  /// arrays, which hold runs already in (key, id) order: run j is [runs[j], runs[j + 1]) (and
+  /// the last ends at `total`); the runs are merged. Ids are unique, so the sorted order (and
+  /// every search result) does not depend on how the particles are spread over ranks.
+  void build(const key_type* keys, const std::uint64_t* ids, const point<D>* x, const double* m,
+             const double* h, std::size_t owned, std::size_t total, const std::vector<std::size_t>& runs,
+             const tree_options& options) {
+    owned_ = owned;
+    merge_sorted_runs(keys, ids, total, runs, sorted_to_storage_);
+    storage_to_sorted_.resize(total);
+    owned_mask_.resize(total);
+    keys_.resize(total);
+    ids_.resize(total);
+    apply_permutation(sorted_to_storage_, keys, keys_.data());
+    apply_permutation(sorted_to_storage_, ids, ids_.data());
+    host_for("ntree::local_tree::index", total, [this](std::size_t s) {
+      storage_to_sorted_[sorted_to_storage_[s]] = s;
+      owned_mask_[s] = sorted_to_storage_[s] < owned_;
+    });
+    gather(x, m, h);
+    tree_.build(keys_.data(), x_.data(), m_.data(), h_.data(), total, options);
+  }
+
+  /// Takes new positions, masses and smoothing lengths of the same particles (storage arrays,
+  /// ghosts updated) and recomputes the node boxes and moments; the structure is kept.
+  void refresh(const point<D>* x, const double* m, const double* h) {
+    gather(x, m, h);
+    tree_.refit(x_.data(), m_.data(), h_.data());
+  }
+
+  const hashed_tree<D>& tree() const { return tree_; }
+  std::size_t size() const { return sorted_to_storage_.size(); }
+  std::size_t owned_size() const { return owned_; }
+  const std::vector<std::size_t>& sorted_to_storage() const { return sorted_to_storage_; }
+  const std::vector<std::size_t>& storage_to_sorted() const { return storage_to_sorted_; }
+  /// owned_mask()[s] is 1 when sorted particle s is owned (search_options::targets).
+  const std::vector<std::uint8_t>& owned_mask() const { return owned_mask_; }
+  /// Sorted copies of the particle data the tree was built from.
+  const std::vector<key_type>& keys() const { return keys_; }
+  const std::vector<std::uint64_t>& ids() const { return ids_; }
+  const std::vector<point<D>>& positions() const { return x_; }
+  const std::vector<double>& masses() const { return m_; }
+  const std::vector<double>& smoothing_lengths() const { return h_; }
+
+  /// Neighbour lists of every owned particle, indexed by its storage index a < owned_size(),
+  /// with neighbours (owned or ghost) as storage indices in ascending (key, id) order; shift
+  /// codes too when `space` is periodic. Uses the group walk (seed Algorithm 2).
+  void find_neighbours(interaction kind, double support, const domain<D>& space, neighbour_lists& out,
+                       const group_options& groups = {}) {
+    group_walk<D>& walk = walk_for(kind, support, groups);
+    walk.find_neighbours(tree_, space, sorted_lists_);
+    const std::size_t owned = owned_;
+    out.offsets.assign(owned + 1, 0);
+    for (std::size_t a = 0; a < owned; ++a)
+      out.offsets[a + 1] = out.offsets[a] + sorted_lists_.count(storage_to_sorted_[a]);
+    out.neighbours.resize(out.offsets[owned]);
+    const bool periodic = !sorted_lists_.shifts.empty();
+    out.shifts.resize(periodic ? out.neighbours.size() : 0);
+    host_for("ntree::local_tree::storage_lists", owned, [&](std::size_t a) {
+      const std::size_t s = storage_to_sorted_[a];
+      std::size_t at = out.offsets[a];
+      for (std::size_t j = sorted_lists_.offsets[s]; j < sorted_lists_.offsets[s + 1]; ++j, ++at) {
+        out.neighbours[at] = static_cast<std::uint32_t>(sorted_to_storage_[sorted_lists_.neighbours[j]]);
+        if (periodic) out.shifts[at] = sorted_lists_.shifts[j];
+      }
+    });
+  }
+
+  /// Calls apply(a, b, shift) with storage indices for every owned target a and each neighbour
+  /// b (the source image is x_b + shift), in parallel over groups of targets; the calls for one
+  /// target come from one thread, in ascending (key, id) order of b.
+  template<class F>
+  void for_each_neighbour(interaction kind, double support, const domain<D>& space, F&& apply,
+                          const group_options& groups = {}) {
+    const std::size_t* map = sorted_to_storage_.data();
+    walk_for(kind, support, groups)
+      .for_each_neighbour(tree_, space, [&apply, map](std::size_t a, std::size_t b, const point<D>& shift) {
+        apply(map[a], map[b], shift);
+      });
+  }
+
+private:
+  void gather(const point<D>* x, const double* m, const double* h) {
+    const std::size_t n = sorted_to_storage_.size();
+    x_.resize(n);
+    m_.resize(n);
+    h_.resize(n);
+    apply_permutation(sorted_to_storage_, x, x_.data());
+    apply_permutation(sorted_to_storage_, m, m_.data());
+    apply_permutation(sorted_to_storage_, h, h_.data());
+  }
+
+  // The walk keeps its workspaces between searches with the same options.
+  group_walk<D>& walk_for(interaction kind, double support, const group_options& groups) {
+    search_options options;
+    options.kind = kind;
+    options.support = support;
+    options.targets = owned_mask_.data();
+    const auto& current = walk_.options();
+    if (current.kind != kind || current.support != support || current.targets != options.targets ||
+        walk_.grouping().max_group_size != groups.max_group_size ||
+        walk_.grouping().max_group_mass != groups.max_group_mass)
+      walk_ = group_walk<D>(options, groups);
+    return walk_;
+  }
+
+  std::size_t owned_ = 0;
+  std::vector<std::size_t> sorted_to_storage_, storage_to_sorted_;
+  std::vector<std::uint8_t> owned_mask_;
+  std::vector<key_type> keys_;
+  std::vector<std::uint64_t> ids_;
+  std::vector<point<D>> x_;
+  std::vector<double> m_, h_;
+  hashed_tree<D> tree_;
+  group_walk<D> walk_;
+  neighbour_lists sorted_lists_;
+};
+
+} // namespace flecsi_lite::topology::ntree

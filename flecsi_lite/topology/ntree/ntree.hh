@@ -1,0 +1,148 @@
+// The distributed ntree topology: particles spread over the ranks by a parallel sample sort of
+// their space-filling-curve keys, ghosts found by branch sharing, and a local hashed tree over
+// owned and ghost particles for searches (FleCSPH, seed sec. 2.3; Warren & Salmon 1993).
+#pragma once
+
+#include "flecsi_lite/data/field.hh"
+#include "flecsi_lite/data/topology_base.hh"
+#include "flecsi_lite/execution/execute.hh"
+#include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/topology/ntree/distributed/distribution_stats.hh"
+#include "flecsi_lite/topology/ntree/distributed/local_tree.hh"
+#include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/keys.hh"
+#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/space.hh"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace flecsi_lite::topology::ntree {
+
+template<int D>
+class ntree;
+template<int D>
+struct branch;
+
+/// How distribute() balances the ranks: equal particle counts, or equal sums of a per-particle
+/// work weight (e.g. the neighbour count of the last search, as FleCSPH offers).
+enum class balance { count, work };
+
+template<int D>
+struct ntree_config {
+  curve order = curve::hilbert;
+  /// Most particles in a leaf of the local tree.
+  std::size_t bucket_size = 16;
+  /// Periodic axes; a periodic domain needs `fixed_box` (the period is its side) and particles
+  /// inside it along the periodic axes.
+  std::array<bool, D> periodic{};
+  /// Box of the keys; without it, the global bounding box of the particles (slightly padded).
+  std::optional<box<D>> fixed_box;
+  /// Bytes of keys each rank sends to rank 0 as its sample (seed: 256 KB).
+  std::size_t sample_bytes = 256 * 1024;
+  balance balancing = balance::count;
+  /// Per-particle weight (>= 0) for balance::work; also reported in the statistics when set.
+  const typename field<double>::template definition<ntree<D>>* work_weight = nullptr;
+  /// Interaction reach in units of h: particles a, b interact when |x_a - x_b| < support *
+  /// max(h_a, h_b) (symmetric) or < support * h_a (gather).
+  double support = 2.0;
+  /// Ghosts are selected with reach support * ghost_reach_factor (>= 1): room for h to grow
+  /// before the next distribute().
+  double ghost_reach_factor = 1.0;
+  /// Most top branches each rank shares: more give tighter boxes and fewer ghosts.
+  std::size_t branch_count = 1024;
+};
+
+/// A distributed set of particles in D dimensions (D = 1, 2, 3). Vocabulary, per rank (seed
+/// Fig. 2.3): OWNED particles live here [0, owned_size()) and are EXCLUSIVE (needed by no other
+/// rank) or SHARED (copied to others); GHOST particles [owned_size(), total_size()) are copies of
+/// particles owned elsewhere, within reach of this rank's particles, ordered by source rank,
+/// then (key, id). Every field defined on ntree<D> follows its particles through distribute().
+template<int D>
+class ntree : public data::topology_base {
+public:
+  using config = ntree_config<D>;
+  using point_type = point<D>;
+
+  // Built-in fields.
+  static inline const typename field<point<D>>::template definition<ntree> position{"position"};
+  static inline const typename field<std::uint64_t>::template definition<ntree> id{"id"};  ///< unique
+  static inline const typename field<double>::template definition<ntree> mass{"mass"};
+  static inline const typename field<double>::template definition<ntree> smoothing_length{"h"};
+  static inline const typename field<key_type>::template definition<ntree> key{"key"};  ///< set by distribute()
+
+  explicit ntree(const config& settings = config{});
+  /// Collective: a tree with `local_count` owned particles here (fields zero).
+  ntree(const config& settings, std::size_t local_count);
+
+  /// Collective: sets the number of owned particles here (values of the first min(old, new)
+  /// kept), drops ghosts, plan and local tree. Fill the fields (by tasks), then distribute().
+  void resize(std::size_t local_count);
+
+  /// Collective: keys, sample sort, all-to-all of all fields, local sort by (key, id), branch
+  /// sharing, ghosts (plan set, built-in fields copied) and the local tree. Afterwards the
+  /// owned particles of rank 0, 1, ... concatenated are in increasing (key, id) order.
+  distribution_stats distribute();
+
+  const config& settings() const { return config_; }
+  /// The box keys were computed in, and the search domain (that box, with periodic axes).
+  const box<D>& key_box() const { return space_.bounds; }
+  const domain<D>& space() const { return space_; }
+  std::uint64_t global_size() const { return global_size_; }
+  /// Number of owned particles on lower ranks: after distribute(), owned particle i is the
+  /// (first_global_index() + i)-th in the global (key, id) order.
+  std::uint64_t first_global_index() const { return first_global_index_; }
+  std::size_t exclusive_size() const { return exclusive_; }
+  std::size_t shared_size() const { return owned_size() - exclusive_; }
+  /// Every rank's top branches as shared by the last distribute(), indexed by rank.
+  const std::vector<std::vector<branch<D>>>& branches() const { return branches_; }
+
+  /// The tree over owned and ghost particles and its sorted/storage index maps.
+  const local_tree<D>& local() const { return local_; }
+  local_tree<D>& local() { return local_; }
+  const hashed_tree<D>& tree() const { return local_.tree(); }
+  const std::vector<std::size_t>& sorted_to_storage() const { return local_.sorted_to_storage(); }
+
+  /// Neighbour lists of the owned particles (storage indices; neighbours in ascending (key, id)
+  /// order, so sums over them do not depend on the rank count), reach settings().support.
+  void find_neighbours(neighbour_lists& out, interaction kind = interaction::symmetric) {
+    local_.find_neighbours(kind, config_.support, space_, out);
+  }
+  /// apply(a, b, shift) for every owned a and neighbour b (storage indices), called in parallel
+  /// over groups of targets (the calls for one a come from one thread), see local_tree.
+  template<class F>
+  void for_each_neighbour(F&& apply, interaction kind = interaction::symmetric) {
+    local_.for_each_neighbour(kind, config_.support, space_, std::forward<F>(apply));
+  }
+  /// Refits the local tree to the current positions, masses and smoothing lengths of the same
+  /// particles (owned values changed since distribute()): launches a task reading them with
+  /// ghosts, so stale ghost values are copied first, and waits for it.
+  void refresh_local_tree();
+
+private:
+  template<class T>
+  data::field_storage<T>& values(const typename field<T>::template definition<ntree>& f) {
+    return this->template storage<T>(f.id(), f.name());
+  }
+  void check_periodic_reach(std::size_t n, MPI_Comm comm);
+  box<D> find_key_box(const point<D>* x, std::size_t n, MPI_Comm comm) const;
+  std::vector<std::vector<std::size_t>> find_ghost_sends(std::size_t& branch_count);
+  void mark_built_in_ghosts_current();
+  void build_local_tree();
+
+  config config_;
+  domain<D> space_;
+  std::uint64_t global_size_ = 0, first_global_index_ = 0;
+  std::size_t exclusive_ = 0;
+  std::vector<std::vector<branch<D>>> branches_;
+  local_tree<D> local_;
+};
+
+} // namespace flecsi_lite::topology::ntree
+
+#include "flecsi_lite/topology/ntree/distributed/ntree_impl.hh"
