@@ -260,23 +260,8 @@ private:
     const double* h = tree.smoothing_lengths();
     const double support = search_.support;
 
-    // The image shifts (among `candidates`) under which `node` is within reach.
     const auto reachable = [&](const search_node<D>& node, std::uint32_t candidates) {
-      const double reach = interaction_radius<Kind>(1.0, group_radius, support * node.h_max);
-      const double reach_squared = reach * reach;
-      if constexpr (Periodic) {
-        std::uint32_t pass = 0;
-        for (std::uint32_t rest = candidates; rest != 0; rest &= rest - 1) {
-          const int c = __builtin_ctz(rest);
-          if (node.template distance_squared_to<true>(targets, shifts[c]) < reach_squared)
-            pass |= std::uint32_t{1} << c;
-        }
-        return pass;
-      } else {
-        return node.template distance_squared_to<false>(targets, shifts[0]) < reach_squared
-                 ? candidates
-                 : 0u;
-      }
+      return reachable_shifts<Kind, Periodic>(node, targets, group_radius, support, shifts, candidates);
     };
 
     std::size_t length = 0;

@@ -28,23 +28,8 @@ void walk_target(const hashed_tree<D>& tree,
   const double* h = tree.smoothing_lengths();
   const double target_radius = support * h_target;
 
-  // The image shifts (among `candidates`) under which `node` may hold a neighbour.
   const auto reachable = [&](const search_node<D>& node, std::uint32_t candidates) {
-    const double reach = interaction_radius<Kind>(1.0, target_radius, support * node.h_max);
-    const double reach_squared = reach * reach;
-    if constexpr (Periodic) {
-      std::uint32_t pass = 0;
-      for (std::uint32_t rest = candidates; rest != 0; rest &= rest - 1) {
-        const int code = __builtin_ctz(rest);
-        if (node.template distance_squared_to<true>(x, shifts[code]) < reach_squared)
-          pass |= std::uint32_t{1} << code;
-      }
-      return pass;
-    } else {
-      return node.template distance_squared_to<false>(x, shifts[0]) < reach_squared
-               ? candidates
-               : 0u;
-    }
+    return reachable_shifts<Kind, Periodic>(node, x, target_radius, support, shifts, candidates);
   };
 
   walk_entry stack[walk_stack_size<D>];

@@ -11,6 +11,28 @@
 
 namespace flecsi_lite::topology::ntree {
 
+/// The image shifts among `candidates` under which `node` may hold a neighbour of `target` (a
+/// point, or a group's box), whose own reach is `target_radius`. Box distances never exceed a
+/// member's distance, so pruning with them is exact.
+template<interaction Kind, bool Periodic, class Node, class Target, class Shifts>
+std::uint32_t reachable_shifts(const Node& node, const Target& target, double target_radius, double support,
+                               const Shifts& shifts, std::uint32_t candidates) {
+  const double reach = interaction_radius<Kind>(1.0, target_radius, support * node.h_max);
+  const double reach_squared = reach * reach;
+  if constexpr (Periodic) {
+    std::uint32_t pass = 0;
+    for (std::uint32_t rest = candidates; rest != 0; rest &= rest - 1) {
+      const int code = __builtin_ctz(rest);
+      if (node.template distance_squared_to<true>(target, shifts[code]) < reach_squared)
+        pass |= std::uint32_t{1} << code;
+    }
+    return pass;
+  } else {
+    return node.template distance_squared_to<false>(target, shifts[0]) < reach_squared ? candidates : 0u;
+  }
+}
+
+
 /// Calls body(kind, periodic) with both as compile-time constants (std::integral_constant), so
 /// that the inner loops of a search are compiled once per case without run-time branches.
 template<class Body>
