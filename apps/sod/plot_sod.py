@@ -78,6 +78,9 @@ def main():
     left = (attribute(attributes, "rho_left", 1.0), attribute(attributes, "p_left", 1.0))
     right = (attribute(attributes, "rho_right", 0.125), attribute(attributes, "p_right", 0.1))
     x0 = attribute(attributes, "x_interface", 0.0)
+    if "kind" in data:  # leave out the fixed wall particles (kind 1) beyond the ends
+        fluid = data["kind"] == 0
+        data = {k: v[fluid] for k, v in data.items()}
     x = data["x"]
     order = np.argsort(x)
     exact, profile = exact_at(args.exact, x, time, gamma, left, right, x0)
@@ -102,7 +105,7 @@ def main():
     for axis in axes[1]:
         axis.set_xlabel("x")
     axes[0][0].legend()
-    figure.suptitle(f"Sod shock tube, t = {time:.3g}, {len(x)} particles; L1: rho {errors['rho']:.2e}, "
+    figure.suptitle(f"Sod shock tube, t = {time:.3g}, {len(x)} fluid particles; L1: rho {errors['rho']:.2e}, "
                     f"P {errors['P']:.2e}, v {errors['v']:.2e}")
     figure.tight_layout()
     output = args.output or os.path.splitext(args.file)[0] + ".png"

@@ -1,0 +1,162 @@
+// The Sedov-Taylor point blast for the SPH specialization: energy E deposited with the kernel at
+// the centre of a uniform, cold medium on a lattice in a periodic box, and the comparison with the
+// similarity solution (Sedov 1959; Kamm & Timmes 2007): shock radius from the radial density peak.
+#pragma once
+
+#include "specialization/analytic/sedov_taylor.hh"
+#include "specialization/sph/driver.hh"
+
+#include "flecsi_lite/io/particle_partition.hh"
+#include "flecsi_lite/runtime/parameters.hh"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace sedov {
+namespace sph = flecsph::sph;
+
+struct problem {
+  int dimension = 3;
+  std::int64_t per_side = 50;      ///< lattice particles per side of the box [-L/2, L/2]^D
+  double side = 1.0;
+  double energy = 1.0;             ///< E, deposited with the kernel around the centre
+  double rho0 = 1.0;
+  double background_pressure = 1e-6;
+};
+
+void declare_parameters(flecsi_lite::runtime::parameter_schema& schema);
+problem problem_from(const flecsi_lite::runtime::parameters& p);
+
+/// Fills this rank's block of the lattice (positions, ids, masses, h, u). The blast energy is
+/// E w_i / sum_j m_j w_j per unit mass with w_i = W(|x_i|, h) of the particle's h, so that exactly E
+/// (up to rounding) is deposited, spread by the kernel. Collective.
+template<int D>
+void create_lattice(sph::simulation<D>& s, const problem& problem) {
+  using f = sph::fields<D>;
+  std::uint64_t total = 1;
+  for (int k = 0; k < D; ++k) total *= static_cast<std::uint64_t>(problem.per_side);
+  const auto block = flecsi_lite::io::block_slice(total, flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
+  flecsi_lite::topology::ntree::box<D> box;
+  box.lo.fill(-0.5 * problem.side);
+  box.hi.fill(0.5 * problem.side);
+  s.tree_settings.fixed_box = box;
+  s.tree_settings.periodic.fill(true);
+  sph::create_particles(s, block.count);
+  auto& p = *s.particles;
+  auto x = flecsi_lite::host_view(f::position()(p));
+  auto id = flecsi_lite::host_view(f::id()(p));
+  auto m = flecsi_lite::host_view(f::mass()(p));
+  auto h = flecsi_lite::host_view(f::smoothing_length()(p));
+  auto kind = flecsi_lite::host_view(f::kind(p));
+  auto rho = flecsi_lite::host_view(f::density(p));
+  auto u = flecsi_lite::host_view(f::internal_energy(p));
+  auto omega = flecsi_lite::host_view(f::omega(p));
+  const double spacing = problem.side / double(problem.per_side);
+  const double mass = problem.rho0 * std::pow(spacing, D);
+  const double smoothing = s.physics.eta * spacing;
+  const double u_background = s.physics.eos.ideal.internal_energy(problem.rho0, problem.background_pressure);
+  // The kernel weights of every lattice site near the centre, summed in a fixed order (the same on
+  // any number of ranks): the normalization of the deposit.
+  double weight_sum = 0;
+  const std::int64_t n = problem.per_side;
+  const auto site = [&](std::uint64_t index) {
+    sph::vector<D> position;
+    for (int k = 0; k < D; ++k, index /= static_cast<std::uint64_t>(n))
+      position[k] = (double(index % static_cast<std::uint64_t>(n)) + 0.5) * spacing - 0.5 * problem.side;
+    return position;
+  };
+  const auto weight = [&](const sph::vector<D>& position) {
+    double r2 = 0;
+    for (int k = 0; k < D; ++k) r2 += position[k] * position[k];
+    return flecsph::physics::dispatch_kernel<D>(s.physics.kernel,
+                                                [&](auto kernel) { return kernel.value(std::sqrt(r2), smoothing); });
+  };
+  for (std::uint64_t i = 0; i < total; ++i) weight_sum += weight(site(i));
+  for (std::size_t i = 0; i < block.count; ++i) {
+    const std::uint64_t index = block.offset + i;
+    x(i) = site(index);
+    id(i) = index;
+    m(i) = mass;
+    h(i) = smoothing;
+    kind(i) = sph::particle_kind::fluid;
+    rho(i) = problem.rho0;
+    omega(i) = 1.0;
+    u(i) = u_background + problem.energy * weight(x(i)) / (mass * weight_sum);
+  }
+}
+
+/// Mean density in radial shells of width `width` around the centre: sums per shell.
+inline constexpr int shell_count = 128;
+struct shell_sums {
+  std::array<double, shell_count> rho{}, count{};
+};
+struct shell_reduction {
+  static shell_sums combine(shell_sums a, const shell_sums& b) {
+    for (int i = 0; i < shell_count; ++i) {
+      a.rho[i] += b.rho[i];
+      a.count[i] += b.count[i];
+    }
+    return a;
+  }
+};
+
+template<int D>
+shell_sums radial_density(double width, sph::accessor<sph::vector<D>, sph::ro> x, sph::accessor<double, sph::ro> rho) {
+  shell_sums sums;
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    double r2 = 0;
+    for (int k = 0; k < D; ++k) r2 += x(a)[k] * x(a)[k];
+    const auto shell = static_cast<std::size_t>(std::sqrt(r2) / width);
+    if (shell >= shell_count) continue;
+    sums.rho[shell] += rho(a);
+    sums.count[shell] += 1;
+  }
+  return sums;
+}
+
+struct blast_comparison {
+  double shock_radius = 0;     ///< Sedov-Taylor R(t)
+  double front_radius = 0;     ///< where the mean density falls to (peak + rho0) / 2 outside the peak
+  double peak_radius = 0;      ///< centre of the shell of highest mean density
+  double peak_density = 0;     ///< that mean density
+  double analytic_peak = 0;    ///< rho0 (gamma+1)/(gamma-1)
+  /// The smoothed shock's half-height point against R(t).
+  double relative_error() const { return (front_radius - shock_radius) / shock_radius; }
+};
+
+/// Shock position of the simulation (the radial density peak) against the similarity solution. Collective.
+template<int D>
+blast_comparison compare_with_sedov_taylor(sph::simulation<D>& s, const problem& problem) {
+  using f = sph::fields<D>;
+  const flecsph::analytic::sedov_taylor exact(D, s.physics.eos.ideal.gamma, problem.energy, problem.rho0);
+  blast_comparison result;
+  result.shock_radius = exact.shock_radius(s.time);
+  result.analytic_peak = exact.post_shock(s.time).rho;
+  const double width = 1.5 * result.shock_radius / shell_count;
+  const auto sums =
+    flecsi_lite::reduce<radial_density<D>, shell_reduction>(width, f::position()(*s.particles), f::density(*s.particles))
+      .get();
+  std::array<double, shell_count> mean{};
+  int peak = -1;
+  for (int i = 0; i < shell_count; ++i) {
+    if (sums.count[i] < 1) continue;
+    mean[i] = sums.rho[i] / sums.count[i];
+    if (mean[i] > result.peak_density) {
+      result.peak_density = mean[i];
+      result.peak_radius = (i + 0.5) * width;
+      peak = i;
+    }
+  }
+  // The front: linear interpolation of the shell means where they cross the half height.
+  const double half = 0.5 * (result.peak_density + problem.rho0);
+  for (int i = peak; i >= 0 && i + 1 < shell_count; ++i) {
+    if (sums.count[i + 1] < 1 || mean[i + 1] > half) continue;
+    const double fraction = (mean[i] - half) / (mean[i] - mean[i + 1]);
+    result.front_radius = (i + 0.5 + fraction) * width;
+    break;
+  }
+  return result;
+}
+
+} // namespace sedov

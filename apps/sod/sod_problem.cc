@@ -1,0 +1,133 @@
+// The Sod shock tube's parameters, particle layout and initial particles (sod_problem.hh).
+#include "sod_problem.hh"
+
+#include "flecsi_lite/runtime/context.hh"
+
+#include <algorithm>
+
+namespace sod {
+
+void declare_parameters(flecsi_lite::runtime::parameter_schema& schema) {
+  const problem d;
+  schema.integer("dimension", "space dimension of the tube (2, 3: periodic transverse axes)")
+    .default_value(d.dimension)
+    .range(1, 3);
+  schema.integer("particles", "1D: fluid particles (equal masses); 2D/3D: particle layers along x on the left")
+    .default_value(d.particles)
+    .at_least(2);
+  schema.real("rho_left", "density left of the interface").default_value(d.rho_left).greater_than(0);
+  schema.real("p_left", "pressure left of the interface").default_value(d.p_left).greater_than(0);
+  schema.real("rho_right", "density right of the interface").default_value(d.rho_right).greater_than(0);
+  schema.real("p_right", "pressure right of the interface").default_value(d.p_right).greater_than(0);
+  schema.real("x_min", "left end of the tube (a wall)").default_value(d.x_min);
+  schema.real("x_interface", "initial position of the discontinuity").default_value(d.x_interface);
+  schema.real("x_max", "right end of the tube (a wall)").default_value(d.x_max);
+  schema.real("tube_width", "2D/3D: period of the transverse axes (0: 8 particle spacings)")
+    .default_value(d.width)
+    .at_least(0);
+  schema.integer("wall_layers", "fixed wall particles at each end (0: as many as the kernel reaches)")
+    .default_value(d.wall_layers)
+    .at_least(0);
+  schema.real("l1_window", "L1 errors over the particles with |x - x_interface| < l1_window")
+    .default_value(d.window)
+    .greater_than(0);
+}
+
+problem problem_from(const flecsi_lite::runtime::parameters& p) {
+  problem result;
+  result.dimension = p.get<int>("dimension");
+  result.particles = p.get<std::int64_t>("particles");
+  result.rho_left = p.get<double>("rho_left");
+  result.p_left = p.get<double>("p_left");
+  result.rho_right = p.get<double>("rho_right");
+  result.p_right = p.get<double>("p_right");
+  result.x_min = p.get<double>("x_min");
+  result.x_interface = p.get<double>("x_interface");
+  result.x_max = p.get<double>("x_max");
+  result.width = p.get<double>("tube_width");
+  result.wall_layers = p.get<std::int64_t>("wall_layers");
+  result.window = p.get<double>("l1_window");
+  if (!(result.x_min < result.x_interface && result.x_interface < result.x_max))
+    throw flecsi_lite::runtime::parameter_error("sod: x_min < x_interface < x_max is required");
+  return result;
+}
+
+namespace {
+/// Smoothing length of a particle of mass m at density rho.
+double initial_h(const sph::physics_settings& physics, int dimension, double m, double rho) {
+  return physics.eta * std::pow(m / rho, 1.0 / dimension);
+}
+
+/// Wall layers: a fluid particle next to a wall reaches 2 (1 + margin) h of walls, and those
+/// walls need the same depth of walls behind them for a complete density sum.
+std::int64_t wall_layers(const problem& problem, const sph::physics_settings& physics, double h, double spacing) {
+  if (problem.wall_layers > 0) return problem.wall_layers;
+  const double reach = 2 * flecsph::physics::kernel_support * (1 + physics.search_margin) * h / spacing;
+  return static_cast<std::int64_t>(std::ceil(reach)) + 2;
+}
+} // namespace
+
+tube_layout layout_of(const problem& problem, const sph::physics_settings& physics, int dimension) {
+  tube_layout layout;
+  layout.dimension = dimension;
+  const double length_left = problem.x_interface - problem.x_min, length_right = problem.x_max - problem.x_interface;
+  if (dimension == 1) {
+    const double mass_left = problem.rho_left * length_left, mass_right = problem.rho_right * length_right;
+    const double total = mass_left + mass_right;
+    layout.right = std::max<std::int64_t>(1, std::llround(double(problem.particles) * mass_right / total));
+    layout.left = std::max<std::int64_t>(1, std::llround(double(layout.right) * mass_left / mass_right));
+    layout.mass = total / double(layout.left + layout.right);
+  } else {
+    const double nominal_left = length_left / double(problem.particles);
+    const double nominal_right = nominal_left * std::pow(problem.rho_left / problem.rho_right, 1.0 / dimension);
+    // Wide enough that the reach 2 (1 + margin) h stays below half the period as h grows.
+    layout.width = problem.width > 0 ? problem.width : 8 * std::max(nominal_left, nominal_right);
+    layout.across_left = std::max<std::int64_t>(1, std::llround(layout.width / nominal_left));
+    layout.across_right = std::max<std::int64_t>(1, std::llround(layout.width / nominal_right));
+    layout.across_spacing_left = layout.width / double(layout.across_left);
+    layout.across_spacing_right = layout.width / double(layout.across_right);
+    layout.mass = problem.rho_left * std::pow(nominal_left, dimension);
+  }
+  const auto across_area = [&](double across) { return std::pow(across, dimension - 1); };
+  layout.spacing_left = layout.mass / (problem.rho_left * across_area(layout.across_spacing_left));
+  layout.spacing_right = layout.mass / (problem.rho_right * across_area(layout.across_spacing_right));
+  if (dimension == 1) {
+    layout.spacing_left = layout.mass / problem.rho_left;
+    layout.spacing_right = layout.mass / problem.rho_right;
+  } else {
+    layout.left = std::max<std::int64_t>(1, std::llround(length_left / layout.spacing_left));
+    layout.right = std::max<std::int64_t>(1, std::llround(length_right / layout.spacing_right));
+  }
+  layout.walls_left = wall_layers(problem, physics, initial_h(physics, dimension, layout.mass, problem.rho_left),
+                                  layout.spacing_left);
+  layout.walls_right = wall_layers(problem, physics, initial_h(physics, dimension, layout.mass, problem.rho_right),
+                                   layout.spacing_right);
+  return layout;
+}
+
+tube_particle particle_of(const problem& problem, const sph::physics_settings& physics, const tube_layout& layout,
+                          std::int64_t index) {
+  tube_particle particle{};
+  const std::int64_t left_count = (layout.walls_left + layout.left) * layout.layer_left();
+  const bool left = index < left_count;
+  const std::int64_t layer_size = left ? layout.layer_left() : layout.layer_right();
+  const std::int64_t local = left ? index : index - left_count;
+  const std::int64_t layer = local / layer_size, cell = local % layer_size;
+  // Layers counted from the interface outwards.
+  const std::int64_t from_interface = left ? layout.walls_left + layout.left - 1 - layer : layer;
+  const double spacing = left ? layout.spacing_left : layout.spacing_right;
+  particle.x[0] = problem.x_interface + (left ? -1.0 : 1.0) * (double(from_interface) + 0.5) * spacing;
+  const std::int64_t across = left ? layout.across_left : layout.across_right;
+  const double across_spacing = left ? layout.across_spacing_left : layout.across_spacing_right;
+  std::int64_t rest = cell;
+  for (int k = 1; k < layout.dimension; ++k, rest /= across)
+    particle.x[k] = (double(rest % across) + 0.5) * across_spacing - 0.5 * layout.width;
+  particle.rho = left ? problem.rho_left : problem.rho_right;
+  particle.P = left ? problem.p_left : problem.p_right;
+  particle.h = initial_h(physics, layout.dimension, layout.mass, particle.rho);
+  particle.kind = from_interface < (left ? layout.left : layout.right) ? sph::particle_kind::fluid
+                                                                        : sph::particle_kind::wall;
+  return particle;
+}
+
+} // namespace sod

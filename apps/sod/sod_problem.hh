@@ -1,0 +1,178 @@
+// The Sod (1978) shock tube for the SPH specialization: the problem's parameters, its initial
+// particles (equal masses, spacing m/rho on each side, fixed wall particles beyond both ends) and
+// the L1 errors against the exact Riemann solution (Toro 2009, ch. 4).
+#pragma once
+
+#include "specialization/analytic/riemann_exact.hh"
+#include "specialization/sph/driver.hh"
+
+#include "flecsi_lite/io/particle_partition.hh"
+#include "flecsi_lite/runtime/parameters.hh"
+#include "flecsi_lite/util/exact_sum.hh"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace sod {
+namespace sph = flecsph::sph;
+
+struct problem {
+  int dimension = 1;
+  std::int64_t particles = 1000;  ///< 1D: fluid particles; 2D/3D: particle layers along x on the left
+  double rho_left = 1, p_left = 1, rho_right = 0.125, p_right = 0.1;
+  double x_min = -0.5, x_interface = 0, x_max = 0.5;
+  double width = 0;              ///< 2D/3D: period of the transverse axes (0: 8 particle spacings)
+  std::int64_t wall_layers = 0;  ///< 0: enough for the kernel support of the walls' neighbours
+  double window = 0.4;           ///< L1 errors over |x - x_interface| < window
+};
+
+/// The problem keys (the physics keys are sph::declare_physics_parameters).
+void declare_parameters(flecsi_lite::runtime::parameter_schema& schema);
+problem problem_from(const flecsi_lite::runtime::parameters& p);
+
+/// The particles of the tube: layers along x (left walls, left fluid, right fluid, right walls),
+/// each layer a square lattice of `across^(D-1)` particles over the periodic transverse axes. All
+/// particles have the same mass m = rho * (spacing along x) * (spacing across)^(D-1) on each side.
+struct tube_layout {
+  int dimension = 1;
+  std::int64_t left = 0, right = 0;                 ///< fluid layers along x
+  std::int64_t walls_left = 0, walls_right = 0;     ///< wall layers beyond each end
+  std::int64_t across_left = 1, across_right = 1;   ///< particles per transverse axis
+  double mass = 0, spacing_left = 0, spacing_right = 0;  ///< along x
+  double across_spacing_left = 0, across_spacing_right = 0, width = 0;
+
+  std::int64_t layer_left() const { return power(across_left); }
+  std::int64_t layer_right() const { return power(across_right); }
+  std::int64_t total() const { return (walls_left + left) * layer_left() + (right + walls_right) * layer_right(); }
+  std::int64_t fluid() const { return left * layer_left() + right * layer_right(); }
+
+private:
+  std::int64_t power(std::int64_t n) const { return dimension == 1 ? 1 : dimension == 2 ? n : n * n; }
+};
+
+/// 1D: N_right ~ N rho_R L_R / M, N_left = N_right (rho_L L_L) / (rho_R L_R) rounded, m = M / N,
+/// spacing m / rho. 2D/3D: left spacing L_L / particles, right spacing larger by
+/// (rho_L / rho_R)^(1/D), both fitted to the transverse period, then the spacings along x that
+/// give equal masses. Walls: as many layers as a fluid particle's reach plus the walls' own.
+tube_layout layout_of(const problem& problem, const sph::physics_settings& physics, int dimension);
+
+/// Particle `index` of the tube (layers from left to right, the transverse lattice inside a
+/// layer): position (unused components zero), density, pressure, smoothing length and kind.
+struct tube_particle {
+  std::array<double, 3> x;
+  double rho, P, h;
+  sph::particle_kind kind;
+};
+tube_particle particle_of(const problem& problem, const sph::physics_settings& physics, const tube_layout& layout,
+                          std::int64_t index);
+
+/// Creates this rank's block of the particles of the tube and their fields; in 2D/3D the
+/// transverse axes are periodic. Collective.
+template<int D>
+void create_tube(sph::simulation<D>& s, const problem& problem) {
+  using f = sph::fields<D>;
+  const tube_layout layout = layout_of(problem, s.physics, D);
+  if constexpr (D > 1) {
+    // Keys in a box around every particle; periodic transverse axes of period `width`.
+    flecsi_lite::topology::ntree::box<D> box;
+    box.lo.fill(-0.5 * layout.width);
+    box.hi.fill(0.5 * layout.width);
+    box.lo[0] = problem.x_interface - double(layout.left + layout.walls_left + 1) * layout.spacing_left;
+    box.hi[0] = problem.x_interface + double(layout.right + layout.walls_right + 1) * layout.spacing_right;
+    s.tree_settings.fixed_box = box;
+    s.tree_settings.periodic.fill(true);
+    s.tree_settings.periodic[0] = false;
+  }
+  const auto block = flecsi_lite::io::block_slice(static_cast<std::uint64_t>(layout.total()),
+                                                  flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
+  sph::create_particles(s, block.count);
+  auto& p = *s.particles;
+  auto x = flecsi_lite::host_view(f::position()(p));
+  auto id = flecsi_lite::host_view(f::id()(p));
+  auto m = flecsi_lite::host_view(f::mass()(p));
+  auto h = flecsi_lite::host_view(f::smoothing_length()(p));
+  auto kind = flecsi_lite::host_view(f::kind(p));
+  auto rho = flecsi_lite::host_view(f::density(p));
+  auto u = flecsi_lite::host_view(f::internal_energy(p));
+  auto omega = flecsi_lite::host_view(f::omega(p));
+  const flecsph::physics::ideal_gas gas = s.physics.eos.ideal;
+  for (std::size_t i = 0; i < block.count; ++i) {
+    const std::int64_t index = static_cast<std::int64_t>(block.offset + i);
+    const tube_particle particle = particle_of(problem, s.physics, layout, index);
+    for (int k = 0; k < D; ++k) x(i)[k] = particle.x[k];
+    id(i) = static_cast<std::uint64_t>(index);
+    m(i) = layout.mass;
+    h(i) = particle.h;
+    kind(i) = particle.kind;
+    rho(i) = particle.rho;
+    u(i) = gas.internal_energy(particle.rho, particle.P);
+    omega(i) = 1.0;
+  }
+  // velocity, acceleration, du/dt and the boundary accumulators start at zero.
+}
+
+/// Sums of |rho - rho_exact|, |P - P_exact|, |v - v_exact| and the count, over the owned fluid
+/// particles with |x - x0| < window.
+struct l1_sums {
+  flecsi_lite::util::exact_sum rho, P, v, count;
+  l1_sums& operator+=(const l1_sums& other) {
+    rho += other.rho;
+    P += other.P;
+    v += other.v;
+    count += other.count;
+    return *this;
+  }
+};
+struct l1_reduction {
+  static l1_sums combine(l1_sums a, const l1_sums& b) { return a += b; }
+};
+
+template<int D>
+l1_sums l1_error_sums(const flecsph::analytic::riemann_solution& exact, double time, double x0, double window,
+                      sph::accessor<sph::vector<D>, sph::ro> x, sph::accessor<sph::vector<D>, sph::ro> v,
+                      sph::accessor<double, sph::ro> rho, sph::accessor<double, sph::ro> P,
+                      sph::accessor<sph::particle_kind, sph::ro> kind) {
+  l1_sums sums;
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    if (kind(a) != sph::particle_kind::fluid || !(std::fabs(x(a)[0] - x0) < window)) continue;
+    const auto state = exact.at(x(a)[0], time, x0);
+    sums.rho.add(std::fabs(rho(a) - state.rho));
+    sums.P.add(std::fabs(P(a) - state.P));
+    sums.v.add(std::fabs(v(a)[0] - state.v));
+    sums.count.add(1.0);
+  }
+  return sums;
+}
+
+struct l1_errors {
+  double rho = 0, P = 0, v = 0;
+  std::uint64_t count = 0;
+};
+
+/// The L1 errors (means over the particles in the window) at the current time. Collective.
+template<int D>
+l1_errors measure_l1_errors(sph::simulation<D>& s, const problem& problem) {
+  using f = sph::fields<D>;
+  auto& p = *s.particles;
+  const auto exact = flecsph::analytic::solve_riemann_problem({problem.rho_left, 0.0, problem.p_left},
+                                                              {problem.rho_right, 0.0, problem.p_right},
+                                                              s.physics.eos.ideal.gamma);
+  const l1_sums sums =
+    flecsi_lite::reduce<l1_error_sums<D>, l1_reduction>(exact, s.time, problem.x_interface, problem.window,
+                                                        f::position()(p), f::velocity(p), f::density(p),
+                                                        f::pressure(p), f::kind(p))
+      .get();
+  l1_errors e;
+  e.count = static_cast<std::uint64_t>(sums.count.value());
+  if (e.count == 0) return e;
+  const double n = sums.count.value();
+  e.rho = sums.rho.value() / n;
+  e.P = sums.P.value() / n;
+  e.v = sums.v.value() / n;
+  return e;
+}
+
+} // namespace sod

@@ -1,0 +1,131 @@
+// Conserved quantities of an SPH run: mass, linear and angular momentum, kinetic, internal and
+// total energy, summed exactly (Demmel & Nguyen 2015 superaccumulator, util::exact_sum) so that
+// the totals are bitwise the same on any number of ranks and threads.
+#pragma once
+
+#include "specialization/sph/density.hh"
+
+#include "flecsi_lite/util/exact_sum.hh"
+
+#include <array>
+#include <vector>
+
+namespace flecsph::sph {
+
+/// Number of angular momentum components in D dimensions: 0 (1D), 1 (L_z in 2D), 3 (3D).
+template<int D>
+inline constexpr int angular_components = D == 3 ? 3 : D == 2 ? 1 : 0;
+
+/// The totals as doubles. Momentum, angular momentum and energy include what the fluid gave the
+/// wall particles (boundary impulse and work), so they are conserved with walls too.
+template<int D>
+struct conserved_totals {
+  double mass = 0;
+  vector<D> momentum{};
+  std::array<double, angular_components<D>> angular_momentum{};
+  double kinetic = 0;
+  double internal = 0;
+  double total = 0;    ///< kinetic + internal (+ the walls' work), summed exactly
+  double boundary = 0; ///< the energy the walls received
+};
+
+/// The exact partial sums one rank contributes; combined over ranks by conserved_reduction.
+template<int D>
+struct conserved_sums {
+  using exact_sum = flecsi_lite::util::exact_sum;
+  exact_sum mass, kinetic, internal, total, boundary;
+  std::array<exact_sum, D> momentum;
+  std::array<exact_sum, angular_components<D>> angular_momentum;
+
+  conserved_sums& operator+=(const conserved_sums& other) {
+    mass += other.mass;
+    kinetic += other.kinetic;
+    internal += other.internal;
+    total += other.total;
+    boundary += other.boundary;
+    for (int k = 0; k < D; ++k) momentum[k] += other.momentum[k];
+    for (int k = 0; k < angular_components<D>; ++k) angular_momentum[k] += other.angular_momentum[k];
+    return *this;
+  }
+
+  conserved_totals<D> totals() const {
+    conserved_totals<D> t;
+    t.mass = mass.value();
+    t.kinetic = kinetic.value();
+    t.internal = internal.value();
+    t.total = total.value();
+    t.boundary = boundary.value();
+    for (int k = 0; k < D; ++k) t.momentum[k] = momentum[k].value();
+    for (int k = 0; k < angular_components<D>; ++k) t.angular_momentum[k] = angular_momentum[k].value();
+    return t;
+  }
+};
+
+/// The reduction operation of reduce<conserved_quantities<D>, conserved_reduction>: exact, so
+/// the combined sums do not depend on the order or the number of ranks.
+struct conserved_reduction {
+  template<class Sums>
+  static Sums combine(Sums a, const Sums& b) {
+    return a += b;
+  }
+};
+
+namespace detail {
+/// L = x cross p, the components that exist in D dimensions.
+template<int D>
+std::array<double, angular_components<D>> cross(const vector<D>& x, const vector<D>& p) {
+  if constexpr (D == 3)
+    return {x[1] * p[2] - x[2] * p[1], x[2] * p[0] - x[0] * p[2], x[0] * p[1] - x[1] * p[0]};
+  else if constexpr (D == 2) return {x[0] * p[1] - x[1] * p[0]};
+  else {
+    (void)x;
+    (void)p;
+    return {};
+  }
+}
+} // namespace detail
+
+/// This rank's exact partial sums over its owned particles: fluid particles contribute m, m v,
+/// x cross m v, m v^2/2 and m u; walls contribute their boundary impulse m J and work m w.
+template<int D>
+conserved_sums<D> conserved_quantities(accessor<vector<D>, ro> x, accessor<vector<D>, ro> v,
+                                       accessor<double, ro> m, accessor<double, ro> u,
+                                       accessor<particle_kind, ro> kind, accessor<vector<D>, ro> impulse,
+                                       accessor<double, ro> work) {
+  flecsi_lite::timers::scoped timer("sph::conserved_quantities");  // reductions are not timed by the executor
+  // Chunks in parallel, each with its own accumulator; exact sums make the result order-free.
+  const std::size_t n = x.size();
+  const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(n, 4 * Kokkos::DefaultHostExecutionSpace().concurrency()));
+  std::vector<conserved_sums<D>> partial(chunks);
+  flecsi_lite::forall(chunks, [&](std::size_t c) {
+    conserved_sums<D>& sums = partial[c];
+    for (std::size_t a = n * c / chunks, end = n * (c + 1) / chunks; a < end; ++a) {
+      vector<D> p;
+      if (kind(a) == particle_kind::fluid) {
+        double v2 = 0;
+        for (int k = 0; k < D; ++k) {
+          p[k] = m(a) * v(a)[k];
+          v2 += v(a)[k] * v(a)[k];
+        }
+        const double kinetic = 0.5 * m(a) * v2, internal = m(a) * u(a);
+        sums.mass.add(m(a));
+        sums.kinetic.add(kinetic);
+        sums.internal.add(internal);
+        sums.total.add(kinetic);
+        sums.total.add(internal);
+      } else {
+        for (int k = 0; k < D; ++k) p[k] = m(a) * impulse(a)[k];
+        const double received = m(a) * work(a);
+        sums.boundary.add(received);
+        sums.total.add(received);
+      }
+      for (int k = 0; k < D; ++k) sums.momentum[k].add(p[k]);
+      const auto angular = detail::cross<D>(x(a), p);
+      for (int k = 0; k < angular_components<D>; ++k) sums.angular_momentum[k].add(angular[k]);
+    }
+  }, "sph::conserved_quantities");
+  for (std::size_t c = 1; c < chunks; ++c) partial[0] += partial[c];
+  return partial[0];
+}
+
+} // namespace flecsph::sph

@@ -1,0 +1,94 @@
+// The density task: rho_a = sum_b m_b W(r_ab, h_a) (seed eq. 1.3), at fixed h or with the adaptive
+// h = eta (m/rho)^(1/D) solved per particle by Newton-Raphson, and the grad-h factor Omega
+// (Springel & Hernquist 2002; Price 2012, JCP 231, 759, sec. 3).
+#pragma once
+
+#include "specialization/sph/kernel_at.hh"
+#include "specialization/sph/neighbourhood.hh"
+#include "specialization/sph/settings.hh"
+
+#include "specialization/physics/kernels.hh"
+#include "specialization/physics/smoothing_length.hh"
+
+#include "flecsi_lite/execution.hh"
+#include "flecsi_lite/runtime/timers.hh"
+
+#include <algorithm>
+#include <cmath>
+
+namespace flecsph::sph {
+
+template<class T, flecsi_lite::privilege Owned, flecsi_lite::privilege Ghost = flecsi_lite::na>
+using accessor = flecsi_lite::accessor<T, Owned, Ghost>;
+using flecsi_lite::na;
+using flecsi_lite::ro;
+using flecsi_lite::rw;
+using flecsi_lite::wo;
+
+namespace detail {
+/// rho(h) = sum_b m_b W(r_ab, h) and its derivative sum_b m_b dW/dh over a's list.
+template<class Kernel, int D>
+void density_sums(const neighbour_walk<D>& walk, std::size_t a, double h, const vector<D>* x,
+                  const double* m, double& rho, double& drho_dh) {
+  const kernel_at<Kernel> kernel(h);
+  const double reach2 = physics::kernel_support * physics::kernel_support * h * h;
+  const vector<D>& x_a = x[a];
+  double sum = 0, derivative = 0;
+  vector<D> r;
+  for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
+    const std::size_t b = walk.neighbour(j);
+    const double r2 = walk.separation(x_a, x[b], j, r);
+    if (r2 >= reach2) continue;  // outside the kernel: the term is zero
+    double w, dw_dh;
+    kernel.value_and_h_derivative(std::sqrt(r2), w, dw_dh);
+    sum += m[b] * w;
+    derivative += m[b] * dw_dh;
+  }
+  rho = sum;
+  drho_dh = derivative;
+}
+} // namespace detail
+
+/// Density (and, with adaptive h, the smoothing length and Omega) of every owned particle.
+/// Wall particles keep their h. Returns the largest h_a / h_limit_a over the owned particles,
+/// where h_limit_a = reach/2 * (h_a at entry) is the largest h for which a's list is complete:
+/// above 1, h grew out of the searched reach (h is then the grown value, rho is not final) and
+/// the caller must search again and call this task again.
+template<int D>
+double compute_density(const neighbourhood<D>& neighbours, physics_settings settings,
+                       accessor<vector<D>, ro, ro> x, accessor<double, ro, ro> m, accessor<particle_kind, ro> kind,
+                       accessor<double, rw> h, accessor<double, wo> rho, accessor<double, wo> omega) {
+  flecsi_lite::timers::scoped timer("sph::density");  // the executor times tasks, not reductions
+  const neighbour_walk<D> walk(neighbours);
+  const std::size_t n = neighbours.size();
+  const vector<D>* xs = x.data();
+  const double* ms = m.data();
+  const double half_reach = 0.5 * neighbours.reach;
+  double worst = 0;
+  physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
+    using Kernel = decltype(kernel);
+    flecsi_lite::forall_reduce(
+      n,
+      [&](std::size_t a, double& local_worst) {
+        const double h_start = h(a), h_limit = half_reach * h_start;
+        const bool adapt = settings.adaptive_smoothing_length && kind(a) == particle_kind::fluid;
+        double h_a = h_start, rho_a = 0, drho_dh = 0;
+        for (int iteration = 1;; ++iteration) {
+          detail::density_sums<Kernel, D>(walk, a, h_a, xs, ms, rho_a, drho_dh);
+          if (!adapt || iteration >= settings.h_iterations) break;
+          const double residual = physics::smoothing_length_residual<D>(h_a, rho_a, m(a), settings.eta);
+          if (std::fabs(residual) < settings.h_tolerance) break;
+          h_a = physics::smoothing_length_newton_step<D>(h_a, rho_a, drho_dh, m(a), settings.eta);
+          if (h_a > h_limit) break;  // the list may miss neighbours: search again
+        }
+        h(a) = h_a;
+        rho(a) = rho_a;
+        omega(a) = adapt ? physics::grad_h_omega<D>(h_a, rho_a, drho_dh) : 1.0;
+        local_worst = std::max(local_worst, h_a / h_limit);
+      },
+      Kokkos::Max<double>(worst), "sph::compute_density");
+  });
+  return std::max(worst, 0.0);  // no owned particle: the reduction's identity is -inf
+}
+
+} // namespace flecsph::sph

@@ -1,0 +1,84 @@
+// The neighbour lists the SPH tasks sum over (compressed sparse rows over the owned particles,
+// neighbours as storage indices, owned or ghost, in the canonical (key, id) order) and the
+// periodic image shifts; filled by the ntree search (seed Algorithm 2), so that the physics does not
+// depend on the tree.
+#pragma once
+
+#include "specialization/sph/fields.hh"
+
+#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/periodic.hh"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace flecsph::sph {
+
+namespace tree = flecsi_lite::topology::ntree;
+
+/// Vocabulary: particle a is a TARGET (owned here); each of its NEIGHBOURS b is seen as the image
+/// x_b + shift, so that the separation is r_ab = x_a - (x_b + shift). The lists hold, for every
+/// owned a, at least every b with |r_ab| < reach * max(h_a, h_b) for the h values they were
+/// searched with, in ascending (key, id) order: sums over them do not depend on the rank count.
+template<int D>
+struct neighbourhood {
+  tree::neighbour_lists lists;  ///< offsets per owned particle, neighbours, shift codes if periodic
+  std::array<vector<D>, tree::shift_code_count<D>> shift_table{};  ///< displacement per shift code
+  double reach = 2.0;  ///< search radius in units of h (>= the kernel support 2)
+
+  std::size_t size() const { return lists.size(); }
+  bool periodic() const { return !lists.shifts.empty(); }
+  /// Mean number of neighbours per target (itself included).
+  double mean_count() const { return size() ? double(lists.total()) / double(size()) : 0.0; }
+};
+
+/// A view of a neighbourhood for the inner loops: raw pointers, separations with images.
+template<int D>
+struct neighbour_walk {
+  const std::size_t* offsets;
+  const std::uint32_t* neighbours;
+  const tree::shift_code* shifts;  // null without periodic axes
+  const vector<D>* shift_table;
+
+  explicit neighbour_walk(const neighbourhood<D>& n)
+    : offsets(n.lists.offsets.data()), neighbours(n.lists.neighbours.data()),
+      shifts(n.periodic() ? n.lists.shifts.data() : nullptr), shift_table(n.shift_table.data()) {}
+
+  std::size_t begin(std::size_t a) const { return offsets[a]; }
+  std::size_t end(std::size_t a) const { return offsets[a + 1]; }
+  std::size_t neighbour(std::size_t j) const { return neighbours[j]; }
+
+  /// r_ab = (x_a - x_b) - shift_j for entry j of a's list, and |r_ab|^2. Grouped so that the
+  /// pair (b, a), seen under the opposite shift, gives exactly the negated vector and the same
+  /// squared distance: pair terms are then antisymmetric to the last bit.
+  double separation(const vector<D>& x_a, const vector<D>& x_b, std::size_t j, vector<D>& r) const {
+    double r2 = 0;
+    if (shifts) {
+      const vector<D>& s = shift_table[shifts[j]];
+      for (int k = 0; k < D; ++k) {
+        r[k] = (x_a[k] - x_b[k]) - s[k];
+        r2 += r[k] * r[k];
+      }
+    } else {
+      for (int k = 0; k < D; ++k) {
+        r[k] = x_a[k] - x_b[k];
+        r2 += r[k] * r[k];
+      }
+    }
+    return r2;
+  }
+};
+
+/// Fills `out` from the tree's search over owned targets (symmetric criterion, reach =
+/// the tree's support). Call after ntree::distribute(), or refresh_local_tree().
+template<int D>
+void find_neighbours(particle_tree<D>& p, neighbourhood<D>& out) {
+  p.find_neighbours(out.lists, tree::interaction::symmetric);
+  const auto table = p.space().shift_table();
+  for (std::size_t c = 0; c < table.size(); ++c)
+    for (int k = 0; k < D; ++k) out.shift_table[c][k] = table[c][k];
+  out.reach = p.settings().support;
+}
+
+} // namespace flecsph::sph

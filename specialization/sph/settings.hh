@@ -1,0 +1,40 @@
+// The physics settings of the SPH specialization (kernel, equation of state, dissipation,
+// smoothing length, time step), and the parameter-file keys that set them, shared by every app.
+#pragma once
+
+#include "specialization/physics/eos.hh"
+#include "specialization/physics/kernels.hh"
+#include "specialization/physics/viscosity.hh"
+
+#include "flecsi_lite/runtime/parameters.hh"
+
+namespace flecsph::sph {
+
+struct physics_settings {
+  physics::kernel_type kernel = physics::kernel_type::cubic_spline;
+  physics::equation_of_state eos{};
+  /// Monaghan & Gingold (1983) viscosity, seed eqs. (1.10)-(1.11): alpha 1, beta 2, epsilon 0.01.
+  physics::viscosity_parameters viscosity{};
+  bool balsara = false;       ///< Balsara (1995) switch on the viscosity
+  double conductivity = 1.0;  ///< alpha_u of the Price (2008) artificial conductivity; 0: off
+  /// Adaptive h = eta (m/rho)^(1/D) by Newton-Raphson with grad-h terms (Price 2012), or fixed h.
+  bool adaptive_smoothing_length = true;
+  double eta = 1.2;
+  double h_tolerance = 1e-6;  ///< on the relative residual of the h-rho relation
+  int h_iterations = 50;      ///< most Newton-Raphson iterations per particle
+  double courant = 0.3;       ///< dt <= courant h / v_signal
+  double acceleration_factor = 0.25;  ///< dt <= factor sqrt(h / |a|)
+  /// The neighbour search reaches 2 (1 + margin) max(h_a, h_b): room for h to grow during the
+  /// density iteration before the particles must be searched again.
+  double search_margin = 0.05;
+  /// Ghosts are selected (1 + skin) times farther than the search reaches, so that the particles
+  /// are distributed again only once their motion and the growth of h have used that room up.
+  double distribution_skin = 0.5;
+};
+
+/// Declares the physics keys (kernel, eos, gamma, ..., search_margin) with their defaults.
+void declare_physics_parameters(flecsi_lite::runtime::parameter_schema& schema);
+/// Reads the keys declared by declare_physics_parameters.
+physics_settings physics_from(const flecsi_lite::runtime::parameters& p);
+
+} // namespace flecsph::sph

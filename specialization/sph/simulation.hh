@@ -1,0 +1,55 @@
+// The state of an SPH run that the driver's control model acts on: settings, the particles (an
+// ntree<D> with the SPH fields), the neighbour lists, the clock and the diagnostics. Apps derive
+// their own state from it (problem parameters, output files).
+#pragma once
+
+#include "specialization/sph/conserved.hh"
+#include "specialization/sph/neighbourhood.hh"
+#include "specialization/sph/settings.hh"
+
+#include "flecsi_lite/execution/future.hh"
+#include "flecsi_lite/topology/ntree/ntree.hh"
+
+#include <chrono>
+#include <memory>
+
+namespace flecsph::sph {
+
+/// How long to run and how often to report.
+struct run_settings {
+  double end_time = 0;
+  long max_steps = 0;         ///< 0: no limit
+  long progress_every = 1;    ///< steps between progress lines (0: none until the end)
+  long diagnostics_every = 1; ///< steps between conserved-quantities lines (0: first and last only)
+};
+
+template<int D>
+struct simulation {
+  static constexpr int dimension = D;
+
+  physics_settings physics;
+  run_settings run;
+  /// Periodic axes, fixed box, curve, ...; the driver sets the support from the physics.
+  tree::ntree_config<D> tree_settings;
+
+  std::unique_ptr<particle_tree<D>> particles;
+  neighbourhood<D> neighbours;
+
+  double time = 0;
+  double dt = 0;  ///< the step about to be taken
+  long step = 0;
+  bool finished = false;  ///< the last step reached end_time (or max_steps)
+
+  conserved_totals<D> initial_totals, totals;  ///< at the start, and at the last diagnostics
+  long totals_step = -1;                        ///< step of `totals`
+  std::uint64_t distributions = 0;              ///< calls of ntree::distribute()
+  std::uint64_t repeated_searches = 0;          ///< searches redone because h outgrew the reach
+  double mean_neighbours = 0;                   ///< at the last progress line, over all ranks
+  std::chrono::steady_clock::time_point started;
+  double elapsed = 0;  ///< wall seconds since the cycle started
+
+  // Between the actions of one step.
+  flecsi_lite::future<double> next_time_step;
+};
+
+} // namespace flecsph::sph
