@@ -40,16 +40,7 @@ flecsi_lite::runtime::parameter_schema make_schema() {
   runtime::parameter_schema schema;
   sod::declare_parameters(schema);
   sph::declare_physics_parameters(schema);
-  schema.real("end_time", "simulation end time").default_value(0.2).greater_than(0);
-  schema.integer("max_steps", "stop after this many steps (0: no limit)").default_value(0).at_least(0);
-  schema.integer("progress_every", "steps between progress lines (0: last only)").default_value(100).at_least(0);
-  schema.integer("diagnostics_every", "steps between conserved-quantity lines (0: first and last)")
-    .default_value(1)
-    .at_least(0);
-  schema.string("output_file", "H5Part output file (none: no output)").default_value("sod.h5part");
-  schema.real("output_every", "simulation time between outputs (0: first and last step only)")
-    .default_value(0.0)
-    .at_least(0);
+  sph::declare_run_parameters(schema, {0.2, 100, 1, "sod.h5part"});
   return schema;
 }
 

@@ -59,4 +59,19 @@ physics_settings physics_from(const flecsi_lite::runtime::parameters& p) {
   return s;
 }
 
+void declare_run_parameters(flecsi_lite::runtime::parameter_schema& schema, const run_parameter_defaults& defaults) {
+  schema.real("end_time", "simulation end time").default_value(defaults.end_time).greater_than(0);
+  schema.integer("max_steps", "stop after this many steps (0: no limit)").default_value(0).at_least(0);
+  schema.integer("progress_every", "steps between progress lines (0: last only)")
+    .default_value(defaults.progress_every)
+    .at_least(0);
+  schema.integer("diagnostics_every", "steps between conserved-quantity lines (0: first and last)")
+    .default_value(defaults.diagnostics_every)
+    .at_least(0);
+  schema.string("output_file", "H5Part output file (none: no output)").default_value(defaults.output_file);
+  schema.real("output_every", "simulation time between outputs (0: first and last step only)")
+    .default_value(0.0)
+    .at_least(0);
+}
+
 } // namespace flecsph::sph

@@ -8,6 +8,8 @@
 
 #include "flecsi_lite/runtime/parameters.hh"
 
+#include <string>
+
 namespace flecsph::sph {
 
 struct physics_settings {
@@ -36,5 +38,15 @@ struct physics_settings {
 void declare_physics_parameters(flecsi_lite::runtime::parameter_schema& schema);
 /// Reads the keys declared by declare_physics_parameters.
 physics_settings physics_from(const flecsi_lite::runtime::parameters& p);
+
+/// The defaults of the run-control keys, which each problem chooses.
+struct run_parameter_defaults {
+  double end_time;
+  long progress_every, diagnostics_every;
+  std::string output_file;
+};
+/// Declares the run-control keys every SPH app shares: end_time, max_steps, progress_every,
+/// diagnostics_every, output_file, output_every.
+void declare_run_parameters(flecsi_lite::runtime::parameter_schema& schema, const run_parameter_defaults& defaults);
 
 } // namespace flecsph::sph
