@@ -5,18 +5,14 @@
 //   mpirun -np 2 sedov apps/sedov/sedov_3d.par [--set particles_per_side=64] [--check 0.05,1e-3]
 #include "sedov_problem.hh"
 
-#include "specialization/sph/driver.hh"
-#include "specialization/sph/particle_output.hh"
+#include "specialization/sph/app.hh"
 
-#include "flecsi_lite/control.hh"
-#include "flecsi_lite/io/h5part_writer.hh"
 #include "flecsi_lite/runtime.hh"
 
 #include <cmath>
 #include <iomanip>
-#include <iostream>
-#include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -24,47 +20,13 @@ using namespace flecsi_lite;
 namespace sph = flecsph::sph;
 
 template<int D>
-struct sedov_run : sph::simulation<D> {
+struct sedov_run : sph::app_state<D> {
   sedov::problem problem;
-  std::string parameters_text, output_file;
-  double output_every = 0, next_output = 0;
-  std::unique_ptr<io::h5part_writer> writer;
   sedov::blast_comparison blast;
 };
 
-runtime::parameter_schema make_schema() {
-  runtime::parameter_schema schema;
-  sedov::declare_parameters(schema);
-  sph::declare_physics_parameters(schema);
-  sph::declare_run_parameters(schema, {0.05, 10, 10, "sedov.h5part"});
-  return schema;
-}
-
-template<int D>
-void write_step(sedov_run<D>& s) {
-  if (!s.writer) return;
-  sph::write_particles(*s.writer, s);
-  s.next_output = s.output_every > 0 ? s.time + s.output_every : s.run.end_time;
-}
-
-template<int D>
-void open_output(sedov_run<D>& s) {
-  if (s.output_file == "none") return;
-  s.writer = std::make_unique<io::h5part_writer>(s.output_file);
-  s.writer->describe_run({"sedov", s.parameters_text, D});
-  s.writer->set_attribute("gamma", s.physics.eos.ideal.gamma);
-  s.writer->set_attribute("blast_energy", s.problem.energy);
-  s.writer->set_attribute("rho0", s.problem.rho0);
-  s.writer->set_attribute("ranks", static_cast<std::int64_t>(runtime::size()));
-  write_step(s);
-}
-
 template<int D>
 void report(sedov_run<D>& s) {
-  if (s.writer) {
-    s.writer->close();
-    log::info() << "sedov: wrote " << s.writer->steps_written() << " steps to " << s.output_file;
-  }
   s.blast = sedov::compare_with_sedov_taylor(s, s.problem);
   std::ostringstream line;
   line << std::setprecision(4) << "sedov: at t = " << s.time << " the shock front (half height) is at r = "
@@ -75,30 +37,10 @@ void report(sedov_run<D>& s) {
   log::info() << line.str();
 }
 
+/// Exit status 1 when --check DR,DE fails.
 template<int D>
-int run(const runtime::parameters& p, const runtime::options& opts) {
-  sedov_run<D> s;
-  s.problem = sedov::problem_from(p);
-  s.physics = sph::physics_from(p);
-  if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
-    throw runtime::parameter_error("sedov: the similarity solution needs eos = ideal_gas");
-  s.run.end_time = p.get<double>("end_time");
-  s.run.max_steps = p.get<long>("max_steps");
-  s.run.progress_every = p.get<long>("progress_every");
-  s.run.diagnostics_every = p.get<long>("diagnostics_every");
-  s.output_file = p.get<std::string>("output_file");
-  s.output_every = p.get<double>("output_every");
-  s.parameters_text = p.resolved_text();
-
-  auto m = sph::make_control_model<sedov_run<D>>();
-  m.action("initial_data", "lattice", [](sedov_run<D>& state) { sedov::create_lattice(state, state.problem); });
-  m.action("initialize", "open_output", open_output<D>);
-  m.action("output", "h5part", [](sedov_run<D>& state) {
-    if (state.writer && (state.finished || state.time >= state.next_output)) write_step(state);
-  });
-  m.action("finalize", "report", report<D>);
-  const int status = m.execute(s);
-  if (status || !runtime::current_settings().control_model_file.empty() || !opts.has("check")) return status;
+int check(const sedov_run<D>& s, const runtime::options& opts) {
+  if (!opts.has("check")) return 0;
   std::stringstream bounds(opts.get("check"));
   double radius_bound = 0, energy_bound = 0;
   char comma = 0;
@@ -109,30 +51,40 @@ int run(const runtime::parameters& p, const runtime::options& opts) {
   if (!pass) log::error() << "sedov: check failed (bounds: radius " << radius_bound << ", energy " << energy_bound << ")";
   return pass ? 0 : 1;
 }
+
+template<int D>
+int run(const runtime::parameters& p, const runtime::options& opts) {
+  sedov_run<D> s;
+  sph::configure(s, "sedov", p);
+  s.problem = sedov::problem_from(p);
+  if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
+    throw runtime::parameter_error("sedov: the similarity solution needs eos = ideal_gas");
+  s.description = {{"blast_energy", s.problem.energy}, {"rho0", s.problem.rho0}};
+  auto m = sph::make_app_control_model<sedov_run<D>>(
+    {[](sedov_run<D>& state) { sedov::set_periodic_box(state, state.problem); },
+     [](sedov_run<D>& state) { sedov::create_lattice(state, state.problem); }});
+  m.action("finalize", "report", report<D>);
+  const int status = m.execute(s);
+  if (status || !runtime::current_settings().control_model_file.empty()) return status;
+  return check(s, opts);
+}
 } // namespace
 
 int main(int argc, char** argv) {
-  runtime::options options("The Sedov-Taylor blast wave with SPH: H5Part output and the shock radius against the "
-                           "similarity solution.");
-  options.positional("parameters", "parameter file (key = value lines); without it, the defaults", false)
-    .repeated("set", "KEY=VALUE", "override a parameter (after the file)")
-    .flag("parameters-help", "list every parameter key and exit")
-    .value("check", "DR,DE", "exit with status 1 unless |shock radius error| <= DR and |energy change|/E <= DE");
-  runtime::runtime rt(argc, argv, options);
-  if (!rt.proceed()) return rt.exit_code();
-  const auto schema = make_schema();
-  if (rt.opts().has("parameters-help")) {
-    if (runtime::rank() == 0) std::cout << schema.help();
-    return 0;
-  }
-  try {
-    const auto p = runtime::parameters::load(schema, rt.opts().get("parameters"), rt.opts().all("set"));
-    return p.get<int>("dimension") == 2 ? run<2>(p, rt.opts()) : run<3>(p, rt.opts());
-  } catch (const runtime::parameter_error& e) {
-    log::error() << e.what();
-    return 2;
-  } catch (const std::exception& e) {
-    log::error() << "sedov: " << e.what();
-    return 3;
-  }
+  sph::app_definition app;
+  app.program = "sedov";
+  app.summary = "The Sedov-Taylor blast wave with SPH: H5Part output and the shock radius against the "
+                "similarity solution.";
+  app.declare_parameters = [](runtime::parameter_schema& schema) {
+    sedov::declare_parameters(schema);
+    sph::declare_physics_parameters(schema);
+    sph::declare_run_parameters(schema, {0.05, 10, 10, "sedov.h5part", "sedov.checkpoint.h5part"});
+  };
+  app.declare_options = [](runtime::options& options) {
+    options.value("check", "DR,DE", "exit with status 1 unless |shock radius error| <= DR and |energy change|/E <= DE");
+  };
+  app.run = [](const runtime::parameters& p, const runtime::options& opts) {
+    return p.get<int>("dimension") == 2 ? run<2>(p, opts) : run<3>(p, opts);
+  };
+  return sph::app_main(argc, argv, app);
 }

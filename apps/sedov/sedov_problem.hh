@@ -28,6 +28,16 @@ struct problem {
 void declare_parameters(flecsi_lite::runtime::parameter_schema& schema);
 problem problem_from(const flecsi_lite::runtime::parameters& p);
 
+/// The domain: the periodic box [-L/2, L/2]^D.
+template<int D>
+void set_periodic_box(sph::simulation<D>& s, const problem& problem) {
+  flecsi_lite::topology::ntree::box<D> box;
+  box.lo.fill(-0.5 * problem.side);
+  box.hi.fill(0.5 * problem.side);
+  s.tree_settings.fixed_box = box;
+  s.tree_settings.periodic.fill(true);
+}
+
 /// Fills this rank's block of the lattice (positions, ids, masses, h, u). The blast energy is
 /// E w_i / sum_j m_j w_j per unit mass with w_i = W(|x_i|, h) of the particle's h, so that exactly E
 /// (up to rounding) is deposited, spread by the kernel. Collective.
@@ -37,11 +47,7 @@ void create_lattice(sph::simulation<D>& s, const problem& problem) {
   std::uint64_t total = 1;
   for (int k = 0; k < D; ++k) total *= static_cast<std::uint64_t>(problem.per_side);
   const auto block = flecsi_lite::io::block_slice(total, flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
-  flecsi_lite::topology::ntree::box<D> box;
-  box.lo.fill(-0.5 * problem.side);
-  box.hi.fill(0.5 * problem.side);
-  s.tree_settings.fixed_box = box;
-  s.tree_settings.periodic.fill(true);
+  set_periodic_box(s, problem);
   sph::create_particles(s, block.count);
   auto& p = *s.particles;
   auto x = flecsi_lite::host_view(f::position()(p));

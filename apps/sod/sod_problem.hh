@@ -69,11 +69,10 @@ struct tube_particle {
 tube_particle particle_of(const problem& problem, const sph::physics_settings& physics, const tube_layout& layout,
                           std::int64_t index);
 
-/// Creates this rank's block of the particles of the tube and their fields; in 2D/3D the
-/// transverse axes are periodic. Collective.
+/// The tube's domain: in 2D/3D a fixed box around every particle, walls included, with periodic
+/// transverse axes of period `width`; in 1D the box follows the particles.
 template<int D>
-void create_tube(sph::simulation<D>& s, const problem& problem) {
-  using f = sph::fields<D>;
+void set_tube_domain(sph::simulation<D>& s, const problem& problem) {
   const tube_layout layout = layout_of(problem, s.physics, D);
   if constexpr (D > 1) {
     // Keys in a box around every particle; periodic transverse axes of period `width`.
@@ -86,6 +85,15 @@ void create_tube(sph::simulation<D>& s, const problem& problem) {
     s.tree_settings.periodic.fill(true);
     s.tree_settings.periodic[0] = false;
   }
+}
+
+/// Creates this rank's block of the particles of the tube and their fields, in the tube's
+/// domain (set_tube_domain). Collective.
+template<int D>
+void create_tube(sph::simulation<D>& s, const problem& problem) {
+  using f = sph::fields<D>;
+  const tube_layout layout = layout_of(problem, s.physics, D);
+  set_tube_domain(s, problem);
   const auto block = flecsi_lite::io::block_slice(static_cast<std::uint64_t>(layout.total()),
                                                   flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
   sph::create_particles(s, block.count);

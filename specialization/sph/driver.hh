@@ -30,6 +30,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace flecsph::sph {
 
@@ -196,12 +197,20 @@ std::string describe_conserved(const conserved_totals<D>& t, const conserved_tot
 template<int D>
 void conserved_diagnostics(simulation<D>& s) {
   const long every = s.run.diagnostics_every;
-  if (!(s.step == 0 || s.finished || (every > 0 && s.step % every == 0))) return;
+  const bool first = s.totals_step < 0;
+  if (!(first || s.finished || (every > 0 && s.step % every == 0))) return;
   s.totals = measure_conserved(s);
   s.totals_step = s.step;
-  if (s.step == 0) s.initial_totals = s.totals;
+  if (first && !s.restarted) s.initial_totals = s.totals;  // a restart keeps the run's initial totals
   flecsi_lite::log::info() << "conserved: step " << s.step << "  t " << std::setprecision(8) << s.time << "  "
                            << describe_conserved(s.totals, s.initial_totals);
+}
+
+/// Throughput of this run since the cycle started (a restart counts from its own first step).
+template<int D>
+double particle_steps_per_second(const simulation<D>& s) {
+  const double steps = static_cast<double>(s.step - s.started_step);
+  return s.elapsed > 0 ? static_cast<double>(s.particles->global_size()) * steps / s.elapsed : 0.0;
 }
 
 template<int D>
@@ -212,11 +221,12 @@ void progress_line(simulation<D>& s) {
   const double total = flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::sum>(s.neighbours).get();
   s.mean_neighbours = s.particles->global_size() ? total / double(s.particles->global_size()) : 0.0;
   const double fraction = s.run.end_time > 0 ? s.time / s.run.end_time : 1.0;
-  const double rate = s.elapsed > 0 ? double(s.particles->global_size()) * double(s.step) / s.elapsed : 0.0;
+  const double rate = particle_steps_per_second(s);
   std::ostringstream line;
   line << "step " << std::setw(6) << s.step << "  t " << std::setw(10) << std::setprecision(6) << s.time << "  dt "
        << std::setw(10) << s.dt << "  " << std::fixed << std::setprecision(1) << std::setw(5) << 100 * fraction
-       << "%  ETA " << std::setprecision(1) << (fraction > 0 ? s.elapsed * (1 - fraction) / fraction : 0.0)
+       << "%  ETA " << std::setprecision(1)
+       << (s.time > s.started_time ? s.elapsed * (s.run.end_time - s.time) / (s.time - s.started_time) : 0.0)
        << " s  " << std::scientific << std::setprecision(3) << rate << " particle-steps/s  "
        << std::fixed << std::setprecision(1) << s.mean_neighbours << " neighbours";
   flecsi_lite::log::info() << line.str();
@@ -261,19 +271,29 @@ flecsi_lite::control::control_model<State> make_control_model() {
   const auto on = [&m](const std::string& point, const std::string& name, void (*action)(base&)) {
     return m.action(point, name, [action](State& s) { action(s); });
   };
-  // initialize: the state at t = 0 and the first time step.
+  // initialize: the state at t = 0 and the first time step (a restart restored them all).
   {
     auto search = on("initialize", "search", [](base& s) {
       if (!s.particles) throw std::logic_error("sph: the initial_data point must create the particles");
       update_neighbours(s, true);
     });
-    auto density = on("initialize", "density", update_density<D>);
-    auto pressure = on("initialize", "equation_of_state", update_pressure<D>);
-    auto forces = on("initialize", "forces", update_forces<D>);
-    auto step = on("initialize", "first_time_step", [](base& s) { choose_time_step(s, false); });
+    auto density = on("initialize", "density", [](base& s) {
+      if (!s.restarted) update_density(s);
+    });
+    auto pressure = on("initialize", "equation_of_state", [](base& s) {
+      if (!s.restarted) update_pressure(s);
+    });
+    auto forces = on("initialize", "forces", [](base& s) {
+      if (!s.restarted) update_forces(s);
+    });
+    auto step = on("initialize", "first_time_step", [](base& s) {
+      if (!s.restarted) choose_time_step(s, false);
+    });
     auto diagnostics = on("initialize", "diagnostics", [](base& s) {
       conserved_diagnostics(s);
       s.started = std::chrono::steady_clock::now();
+      s.started_step = s.step;
+      s.started_time = s.time;
     });
     m.depends(density, search).depends(pressure, density).depends(forces, pressure).depends(step, forces);
     m.depends(diagnostics, step);
@@ -281,7 +301,9 @@ flecsi_lite::control::control_model<State> make_control_model() {
   // advance: one kick-drift-kick step.
   {
     auto drift = on("advance", "kick_drift", first_kick_and_drift<D>);
-    auto search = on("advance", "search", [](base& s) { update_neighbours(s); });
+    auto search = on("advance", "search", [](base& s) {
+      update_neighbours(s, std::exchange(s.redistribute_next, false));
+    });
     auto density = on("advance", "density", update_density<D>);
     auto pressure = on("advance", "equation_of_state", update_pressure<D>);
     auto forces = on("advance", "forces", update_forces<D>);
@@ -297,7 +319,7 @@ flecsi_lite::control::control_model<State> make_control_model() {
     const memory_use bytes = measure_memory(s);
     flecsi_lite::log::info() << "sph: " << s.step << " steps to t = " << s.time << " in " << std::setprecision(4)
                              << s.elapsed << " s: "
-                             << (s.elapsed > 0 ? double(s.particles->global_size()) * s.step / s.elapsed : 0.0)
+                             << particle_steps_per_second(s)
                              << " particle-steps/s, " << s.distributions << " distributions, "
                              << s.repeated_searches << " repeated searches; bytes per owned particle (rank 0): "
                              << std::setprecision(3) << bytes.fields << " in fields, " << bytes.neighbour_lists

@@ -13,15 +13,14 @@
 
 namespace flecsph::sph {
 
-/// Collective: opens a step at s.time (TimeValue, time, step, dt) and writes every owned
-/// particle. After distribute() the ranks' owned particles concatenated are in (key, id) order, so
-/// the file's particle order does not depend on the rank count.
+/// Collective: writes every owned particle's quantities into the open step of `out`. After
+/// distribute() the ranks' owned particles concatenated are in (key, id) order, so the file's
+/// particle order does not depend on the rank count.
 template<int D>
-void write_particles(flecsi_lite::io::h5part_writer& out, simulation<D>& s) {
+void write_particle_arrays(flecsi_lite::io::h5part_writer& out, simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
   const std::size_t n = p.owned_size();
-  out.begin_step({s.time, s.step, s.dt});
   std::vector<double> buffer(n);
   const auto components = [&](const auto& reference, const char* const names[3]) {
     const auto view = flecsi_lite::host_view(reference);
@@ -52,6 +51,13 @@ void write_particles(flecsi_lite::io::h5part_writer& out, simulation<D>& s) {
     for (std::size_t i = 0; i < n; ++i) values[i] = static_cast<std::int32_t>(kind(i));
     out.write("kind", values.data(), n);
   }
+}
+
+/// Collective: one step at s.time (TimeValue, time, step, dt) with every owned particle.
+template<int D>
+void write_particles(flecsi_lite::io::h5part_writer& out, simulation<D>& s) {
+  out.begin_step({s.time, s.step, s.dt});
+  write_particle_arrays(out, s);
   out.end_step();
 }
 

@@ -72,6 +72,45 @@ void declare_run_parameters(flecsi_lite::runtime::parameter_schema& schema, cons
   schema.real("output_every", "simulation time between outputs (0: first and last step only)")
     .default_value(0.0)
     .at_least(0);
+  schema.string("checkpoint_file", "checkpoint (H5Part) for restarts, replaced at each checkpoint")
+    .default_value(defaults.checkpoint_file);
+  schema.integer("checkpoint_every", "steps between checkpoints (0: none)").default_value(0).at_least(0);
+  schema.string("restart_file", "continue the run saved in this checkpoint (none: start at t = 0)")
+    .default_value("none");
+  schema.string("initial_data", "H5Part file of the initial particles (none: the problem's own)")
+    .default_value("none");
+  schema.integer("initial_data_step", "Step#k of initial_data to read (-1: the last)").default_value(-1).at_least(-1);
+}
+
+run_settings run_settings_from(const flecsi_lite::runtime::parameters& p) {
+  run_settings r;
+  r.end_time = p.get<double>("end_time");
+  r.max_steps = p.get<long>("max_steps");
+  r.progress_every = p.get<long>("progress_every");
+  r.diagnostics_every = p.get<long>("diagnostics_every");
+  return r;
+}
+
+io_settings io_settings_from(const flecsi_lite::runtime::parameters& p) {
+  io_settings io;
+  const auto file = [&p](const char* key) {
+    std::string name = p.get<std::string>(key);
+    return name == "none" ? std::string() : name;
+  };
+  io.output_file = file("output_file");
+  io.output_every = p.get<double>("output_every");
+  io.checkpoint_file = file("checkpoint_file");
+  io.checkpoint_every = p.get<long>("checkpoint_every");
+  io.restart_file = file("restart_file");
+  io.initial_data = file("initial_data");
+  io.initial_data_step = p.get<long>("initial_data_step");
+  if (!io.restart_file.empty() && !io.initial_data.empty())
+    throw flecsi_lite::runtime::parameter_error("restart_file and initial_data are both set: a restart continues "
+                                                "the checkpoint's particles; set only one of them");
+  if (io.checkpoint_every > 0 && io.checkpoint_file.empty())
+    throw flecsi_lite::runtime::parameter_error("checkpoint_every = " + std::to_string(io.checkpoint_every) +
+                                                " needs a checkpoint_file (it is none)");
+  return io;
 }
 
 } // namespace flecsph::sph

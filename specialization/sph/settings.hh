@@ -39,14 +39,38 @@ void declare_physics_parameters(flecsi_lite::runtime::parameter_schema& schema);
 /// Reads the keys declared by declare_physics_parameters.
 physics_settings physics_from(const flecsi_lite::runtime::parameters& p);
 
+/// How long to run and how often to report.
+struct run_settings {
+  double end_time = 0;
+  long max_steps = 0;         ///< 0: no limit
+  long progress_every = 1;    ///< steps between progress lines (0: none until the end)
+  long diagnostics_every = 1; ///< steps between conserved-quantities lines (0: first and last only)
+};
+
+/// Files a run reads and writes; an empty name is "none".
+struct io_settings {
+  std::string output_file;
+  double output_every = 0;  ///< simulation time between outputs; 0: first and last step only
+  std::string checkpoint_file;
+  long checkpoint_every = 0;  ///< steps between checkpoints; 0: none
+  std::string restart_file;   ///< continue the run of this checkpoint
+  std::string initial_data;   ///< H5Part file of the initial particles
+  long initial_data_step = -1;  ///< its Step#k; -1: the last
+};
+
 /// The defaults of the run-control keys, which each problem chooses.
 struct run_parameter_defaults {
   double end_time;
   long progress_every, diagnostics_every;
-  std::string output_file;
+  std::string output_file, checkpoint_file;
 };
-/// Declares the run-control keys every SPH app shares: end_time, max_steps, progress_every,
-/// diagnostics_every, output_file, output_every.
+/// Declares the run-control and file keys every SPH app shares: end_time, max_steps,
+/// progress_every, diagnostics_every, output_file, output_every, checkpoint_file,
+/// checkpoint_every, restart_file, initial_data, initial_data_step.
 void declare_run_parameters(flecsi_lite::runtime::parameter_schema& schema, const run_parameter_defaults& defaults);
+/// Reads the run-control keys.
+run_settings run_settings_from(const flecsi_lite::runtime::parameters& p);
+/// Reads the file keys; contradictory ones (restart_file and initial_data) are parameter errors.
+io_settings io_settings_from(const flecsi_lite::runtime::parameters& p);
 
 } // namespace flecsph::sph

@@ -15,14 +15,6 @@
 
 namespace flecsph::sph {
 
-/// How long to run and how often to report.
-struct run_settings {
-  double end_time = 0;
-  long max_steps = 0;         ///< 0: no limit
-  long progress_every = 1;    ///< steps between progress lines (0: none until the end)
-  long diagnostics_every = 1; ///< steps between conserved-quantities lines (0: first and last only)
-};
-
 template<int D>
 struct simulation {
   static constexpr int dimension = D;
@@ -39,6 +31,10 @@ struct simulation {
   double dt = 0;  ///< the step about to be taken
   long step = 0;
   bool finished = false;  ///< the last step reached end_time (or max_steps)
+  /// Restored from a checkpoint: the state of the current step is complete (forces included).
+  bool restarted = false;
+  /// Distribute the particles at the next search (after a checkpoint: see restart.hh).
+  bool redistribute_next = false;
 
   conserved_totals<D> initial_totals, totals;  ///< at the start, and at the last diagnostics
   long totals_step = -1;                        ///< step of `totals`
@@ -46,6 +42,8 @@ struct simulation {
   std::uint64_t repeated_searches = 0;          ///< searches redone because h outgrew the reach
   double mean_neighbours = 0;                   ///< at the last progress line, over all ranks
   std::chrono::steady_clock::time_point started;
+  long started_step = 0;     ///< step when the cycle started
+  double started_time = 0;  ///< simulation time then
   double elapsed = 0;  ///< wall seconds since the cycle started
 
   // Between the actions of one step.
