@@ -12,6 +12,7 @@
 #include "flecsi_lite/execution/future.hh"
 #include "flecsi_lite/execution/reduction.hh"
 #include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/runtime/timers.hh"
 
 #include <string_view>
 #include <tuple>
@@ -167,7 +168,11 @@ auto reduce(Args&&... args) {
   auto l = execution::executor::instance().record(
     name, execution::launch_kind::reduction, c.accesses, std::move(c.after),
     [b = binders, buffer](execution::launch& self) {
-      buffer->mine = carrier::pack(std::apply([](auto&... a) { return F(a.get()...); }, *b));
+      {
+        // The task's own time, under its name like every task; not the wait for the other ranks.
+        timers::scoped timer(name);
+        buffer->mine = carrier::pack(std::apply([](auto&... a) { return F(a.get()...); }, *b));
+      }
       buffer->all.resize(runtime::size());
       MPI_Request request;
       MPI_Iallgather(&buffer->mine, sizeof(transported), MPI_BYTE, buffer->all.data(),

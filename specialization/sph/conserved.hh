@@ -92,10 +92,10 @@ conserved_sums<D> conserved_quantities(accessor<vector<D>, ro> x, accessor<vecto
                                        accessor<double, ro> m, accessor<double, ro> u,
                                        accessor<particle_kind, ro> kind, accessor<vector<D>, ro> impulse,
                                        accessor<double, ro> work) {
-  flecsi_lite::timers::scoped timer("sph::conserved_quantities");  // reductions are not timed by the executor
   // Chunks in parallel, each with its own accumulator; exact sums make the result order-free.
   const std::size_t n = x.size();
-  const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(n, 4 * Kokkos::DefaultHostExecutionSpace().concurrency()));
+  const std::size_t threads = static_cast<std::size_t>(Kokkos::DefaultHostExecutionSpace().concurrency());
+  const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(n, 4 * threads));
   std::vector<conserved_sums<D>> partial(chunks);
   flecsi_lite::forall(chunks, [&](std::size_t c) {
     conserved_sums<D>& sums = partial[c];
