@@ -3,6 +3,11 @@
 # Debian packages (MPI, parallel HDF5, Eigen, Catch2 v2, build and plot tools) and a Kokkos
 # source tree for CMake's FetchContent when the upstream release cannot be downloaded.
 # A second run installs nothing and takes a few seconds.
+#
+# FLECSPH_INSTALL_CLIENTS=1 (scripts/run-tests.sh sets it) also installs the viewers that the
+# client tests (tests/clients) run on our H5Part files: ParaView's pvpython, with Xvfb since
+# Debian's ParaView renders through X even offscreen, and splash. About 150 MB to download and
+# 800 MB on disk, 2 minutes to install: the main job does without them.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -14,6 +19,9 @@ packages=(
   libeigen3-dev catch2
   python3 python3-numpy python3-h5py python3-matplotlib
 )
+if [ "${FLECSPH_INSTALL_CLIENTS:-0}" = 1 ]; then
+  packages+=(python3-paraview xvfb splash)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

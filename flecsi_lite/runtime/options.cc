@@ -2,6 +2,8 @@
 
 #include "flecsi_lite/util/edit_distance.hh"
 
+#include <Kokkos_Core.hpp>
+
 #include <sstream>
 
 namespace flecsi_lite::runtime {
@@ -109,7 +111,9 @@ std::string options::help(const std::string& program) const {
     if (s.type == kind::repeated) out << " (repeatable)";
     out << "\n";
   }
-  out << "\nKokkos options (--kokkos-num-threads=N, --kokkos-help, ...) are passed to Kokkos.\n";
+  // Only the runtime hands argv to Kokkos (before parsing); serial tools never start Kokkos.
+  if (Kokkos::is_initialized())
+    out << "\nKokkos options (--kokkos-num-threads=N, --kokkos-help, ...) are passed to Kokkos.\n";
   return out.str();
 }
 

@@ -30,6 +30,7 @@ public:
   bool has(const std::string& name) const;  // flag given, or value/positional present
   std::string get(const std::string& name) const;  // value, default, or "" when absent
   std::vector<std::string> all(const std::string& name) const;  // every occurrence
+  /// Usage, options and defaults; with a note on --kokkos-* options when Kokkos is running.
   std::string help(const std::string& program) const;
 
 private:

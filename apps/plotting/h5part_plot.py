@@ -1,0 +1,87 @@
+"""What the plot scripts share: reading H5Part steps, their command line, the exact-solution program.
+
+apps/sod/plot_sod.py and apps/sedov/plot_sedov.py put this folder on sys.path and import it; a
+reader and a figure are all a new plot script has to add.
+"""
+import argparse
+import csv
+import io
+import os
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DEFAULT_EXACT = os.path.join(HERE, "..", "..", "build", "apps", "exact", "exact_solution")
+
+
+def step_indices(path, program):
+    """The k of every Step#k group of an H5Part file, in increasing order."""
+    with h5py.File(path, "r") as f:
+        indices = sorted(int(k[5:]) for k in f.keys() if k.startswith("Step#"))
+    if not indices:
+        sys.exit(f"{program}: {path} holds no Step#N group")
+    return indices
+
+
+def read_step(path, step, program):
+    """Returns (time, {dataset: array}, root attributes) of Step#step, the last step when None."""
+    indices = step_indices(path, program)
+    step = indices[-1] if step is None else step
+    if step not in indices:
+        sys.exit(f"{program}: {path} has no Step#{step} (steps: Step#{indices[0]} .. Step#{indices[-1]})")
+    with h5py.File(path, "r") as f:
+        group = f[f"Step#{step}"]
+        data = {k: group[k][()] for k in group.keys()}
+        time = float(group.attrs.get("TimeValue", group.attrs.get("time", 0.0)))
+        attributes = {k: f.attrs[k] for k in f.attrs.keys()}
+    return time, data, attributes
+
+
+def number(attributes, key, default):
+    """A numeric root attribute as a float (HDF5 tools may store scalars as 1-element arrays)."""
+    value = attributes.get(key, default)
+    if hasattr(value, "__len__"):
+        value = value[0]
+    return float(value)
+
+
+def command_line(description):
+    """The options every plot script takes: the file, --step, --output and --exact."""
+    parser = argparse.ArgumentParser(description=description,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("file", help="H5Part file written by the app")
+    parser.add_argument("--step", type=int, help="index k of Step#k (default: the last step)")
+    parser.add_argument("--output", help="PNG to write (default: the file's name with .png)")
+    parser.add_argument("--exact", default=DEFAULT_EXACT, help="the exact_solution program")
+    return parser
+
+
+def exact_solution(exact, arguments, program):
+    """Runs apps/exact/exact_solution with `arguments` and returns its CSV columns as arrays."""
+    command = [exact] + [str(a) for a in arguments]
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"{program}: {' '.join(command)} failed: {result.stderr.strip()}")
+    rows = list(csv.DictReader(io.StringIO(result.stdout)))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0].keys()}
+
+
+def pyplot():
+    """matplotlib.pyplot drawing to files only (no display needed)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def save(figure, args, dpi):
+    """Writes the figure to --output, or next to the input file, and says where."""
+    output = args.output or os.path.splitext(args.file)[0] + ".png"
+    figure.savefig(output, dpi=dpi)
+    print(f"plot written to {output}")
+    return output
