@@ -12,9 +12,11 @@ void declare_parameters(flecsi_lite::runtime::parameter_schema& schema) {
   schema.integer("dimension", "space dimension of the tube (2, 3: periodic transverse axes)")
     .default_value(d.dimension)
     .range(1, 3);
-  schema.integer("particles", "1D: fluid particles (equal masses); 2D/3D: particle layers along x on the left")
+  schema.integer("particles", "1D: fluid particles (equal masses); 2D/3D: mean particle spacings along x on the left")
     .default_value(d.particles)
     .at_least(2);
+  schema.choice("lattice", {"body_centred", "cubic"}, "2D/3D: lattice of the particles")
+    .default_value("body_centred");
   schema.real("rho_left", "density left of the interface").default_value(d.rho_left).greater_than(0);
   schema.real("p_left", "pressure left of the interface").default_value(d.p_left).greater_than(0);
   schema.real("rho_right", "density right of the interface").default_value(d.rho_right).greater_than(0);
@@ -22,7 +24,7 @@ void declare_parameters(flecsi_lite::runtime::parameter_schema& schema) {
   schema.real("x_min", "left end of the tube (a wall)").default_value(d.x_min);
   schema.real("x_interface", "initial position of the discontinuity").default_value(d.x_interface);
   schema.real("x_max", "right end of the tube (a wall)").default_value(d.x_max);
-  schema.real("tube_width", "2D/3D: period of the transverse axes (0: 8 particle spacings)")
+  schema.real("tube_width", "2D/3D: period of the transverse axes (0: about 8 mean particle spacings)")
     .default_value(d.width)
     .at_least(0);
   schema.integer("wall_layers", "fixed wall particles at each end (0: as many as the kernel reaches)")
@@ -37,6 +39,7 @@ problem problem_from(const flecsi_lite::runtime::parameters& p) {
   problem result;
   result.dimension = p.get<int>("dimension");
   result.particles = p.get<std::int64_t>("particles");
+  result.lattice = p.get<std::string>("lattice") == "cubic" ? lattice_type::cubic : lattice_type::body_centred;
   result.rho_left = p.get<double>("rho_left");
   result.p_left = p.get<double>("p_left");
   result.rho_right = p.get<double>("rho_right");
@@ -78,15 +81,21 @@ tube_layout layout_of(const problem& problem, const sph::physics_settings& physi
     layout.left = std::max<std::int64_t>(1, std::llround(double(layout.right) * mass_left / mass_right));
     layout.mass = total / double(layout.left + layout.right);
   } else {
-    const double nominal_left = length_left / double(problem.particles);
-    const double nominal_right = nominal_left * std::pow(problem.rho_left / problem.rho_right, 1.0 / dimension);
-    // Wide enough that the reach 2 (1 + margin) h stays below half the period as h grows.
-    layout.width = problem.width > 0 ? problem.width : 8 * std::max(nominal_left, nominal_right);
-    layout.across_left = std::max<std::int64_t>(1, std::llround(layout.width / nominal_left));
-    layout.across_right = std::max<std::int64_t>(1, std::llround(layout.width / nominal_right));
+    layout.body_centred = problem.lattice == lattice_type::body_centred;
+    // Mean spacings (m/rho)^(1/D) and cells (of 2 particles when body-centred) on each side.
+    const double spacing_left = length_left / double(problem.particles);
+    const double spacing_right = spacing_left * std::pow(problem.rho_left / problem.rho_right, 1.0 / dimension);
+    const double cell = std::pow(layout.body_centred ? 2.0 : 1.0, 1.0 / dimension);
+    const double cell_left = cell * spacing_left, cell_right = cell * spacing_right;
+    // Wide enough that the reach 2 (1 + margin) h stays below half the period as h grows: about
+    // 8 mean spacings of the coarser side, in whole cells of that side.
+    const double coarse_cell = cell * std::max(spacing_left, spacing_right);
+    layout.width = problem.width > 0 ? problem.width : double(std::llround(8 / cell)) * coarse_cell;
+    layout.across_left = std::max<std::int64_t>(1, std::llround(layout.width / cell_left));
+    layout.across_right = std::max<std::int64_t>(1, std::llround(layout.width / cell_right));
     layout.across_spacing_left = layout.width / double(layout.across_left);
     layout.across_spacing_right = layout.width / double(layout.across_right);
-    layout.mass = problem.rho_left * std::pow(nominal_left, dimension);
+    layout.mass = problem.rho_left * std::pow(spacing_left, dimension);
   }
   const auto across_area = [&](double across) { return std::pow(across, dimension - 1); };
   layout.spacing_left = layout.mass / (problem.rho_left * across_area(layout.across_spacing_left));
@@ -119,9 +128,11 @@ tube_particle particle_of(const problem& problem, const sph::physics_settings& p
   particle.x[0] = problem.x_interface + (left ? -1.0 : 1.0) * (double(from_interface) + 0.5) * spacing;
   const std::int64_t across = left ? layout.across_left : layout.across_right;
   const double across_spacing = left ? layout.across_spacing_left : layout.across_spacing_right;
+  // Body-centred: odd layers sit in the middle of the even layers' cells.
+  const double offset = layout.body_centred ? (from_interface % 2 ? 0.75 : 0.25) : 0.5;
   std::int64_t rest = cell;
   for (int k = 1; k < layout.dimension; ++k, rest /= across)
-    particle.x[k] = (double(rest % across) + 0.5) * across_spacing - 0.5 * layout.width;
+    particle.x[k] = (double(rest % across) + offset) * across_spacing - 0.5 * layout.width;
   particle.rho = left ? problem.rho_left : problem.rho_right;
   particle.P = left ? problem.p_left : problem.p_right;
   particle.h = initial_h(physics, layout.dimension, layout.mass, particle.rho);
