@@ -11,7 +11,6 @@
 #include "specialization/physics/smoothing_length.hh"
 
 #include "flecsi_lite/execution.hh"
-#include "flecsi_lite/runtime/timers.hh"
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +57,6 @@ template<int D>
 double compute_density(const neighbourhood<D>& neighbours, physics_settings settings,
                        accessor<vector<D>, ro, ro> x, accessor<double, ro, ro> m, accessor<particle_kind, ro> kind,
                        accessor<double, rw> h, accessor<double, wo> rho, accessor<double, wo> omega) {
-  flecsi_lite::timers::scoped timer("sph::density");  // the executor times tasks, not reductions
   const neighbour_walk<D> walk(neighbours);
   const std::size_t n = neighbours.size();
   const vector<D>* xs = x.data();
@@ -67,7 +65,7 @@ double compute_density(const neighbourhood<D>& neighbours, physics_settings sett
   double worst = 0;
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
     using Kernel = decltype(kernel);
-    flecsi_lite::forall_reduce(
+    for_each_target(
       n,
       [&](std::size_t a, double& local_worst) {
         const double h_start = h(a), h_limit = half_reach * h_start;

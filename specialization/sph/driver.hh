@@ -80,6 +80,7 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
 
 /// Density and smoothing length; when some h outgrew the searched reach, searches again with the
 /// grown h and repeats (the same decision on every rank, so results stay rank-count independent).
+/// The search again redistributes only when the ghosts no longer suffice for the grown h.
 template<int D>
 void update_density(simulation<D>& s) {
   using f = fields<D>;
@@ -95,7 +96,7 @@ void update_density(simulation<D>& s) {
       throw std::runtime_error("sph: the smoothing length keeps outgrowing the neighbour search (" +
                                std::to_string(worst) + " times the reach); raise search_margin");
     ++s.repeated_searches;
-    update_neighbours(s, true);
+    update_neighbours(s);
   }
 }
 
@@ -245,10 +246,10 @@ memory_use measure_memory(const simulation<D>& s) {
   const double owned = static_cast<double>(std::max<std::size_t>(1, s.particles->owned_size()));
   for (const auto& storage : s.particles->storages())
     if (storage) result.fields += static_cast<double>(storage->element_size() * storage->size());
-  const auto& lists = s.neighbours.lists;
-  result.neighbour_lists = static_cast<double>(lists.offsets.size() * sizeof(std::size_t) +
-                                               lists.neighbours.size() * sizeof(std::uint32_t) +
-                                               lists.shifts.size() * sizeof(tree::shift_code));
+  const auto& lists = s.neighbours.lists;  // what is allocated, spare room included
+  result.neighbour_lists = static_cast<double>(lists.offsets.capacity() * sizeof(std::size_t) +
+                                               lists.neighbours.capacity() * sizeof(std::uint32_t) +
+                                               lists.shifts.capacity() * sizeof(tree::shift_code));
   result.fields /= owned;
   result.neighbour_lists /= owned;
   return result;

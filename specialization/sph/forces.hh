@@ -12,8 +12,63 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace flecsph::sph {
+
+namespace detail {
+/// The fields the force loop reads, as raw arrays over owned and ghost particles.
+template<int D>
+struct force_fields {
+  const vector<D>* x;
+  const vector<D>* v;
+  const double *m, *h, *rho, *P, *cs, *pressure_term, *u, *balsara;
+};
+
+/// The sums of compute_forces for particle a: dv/dt, du/dt and the largest signal velocity, in
+/// list order. Conductivity is a compile-time choice: without it, the loop has less to keep live.
+template<class Kernel, bool Conductivity, int D>
+void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields<D>& in,
+                const physics::viscosity_parameters& viscosity, double conductivity, vector<D>& dv_dt,
+                double& du, double& signal) {
+  const double support2 = physics::kernel_support * physics::kernel_support;
+  const vector<D> x_a = in.x[a], v_a = in.v[a];
+  const double h_a = in.h[a], rho_a = in.rho[a], c_a = in.cs[a], term_a = in.pressure_term[a];
+  const kernel_at<Kernel> kernel_a(h_a);
+  const physics::viscosity_particle particle_a{rho_a, c_a, h_a, in.balsara[a]};
+  vector<D> r, sum_v{};
+  double sum_u = 0, largest = c_a;
+  for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
+    const std::size_t b = walk.neighbour(j);
+    const double r2 = walk.separation(x_a, in.x[b], j, r);
+    const double h_b = in.h[b], h_max = std::max(h_a, h_b);
+    if (r2 >= support2 * h_max * h_max || r2 == 0) continue;
+    const double distance = std::sqrt(r2);
+    const double F_a = kernel_a.gradient_factor(distance);
+    const double F_b = kernel_at<Kernel>(h_b).gradient_factor(distance);
+    const double F_ab = 0.5 * (F_a + F_b);
+    const vector<D>& v_b = in.v[b];
+    double r_dot_v = 0;
+    for (int k = 0; k < D; ++k) r_dot_v += r[k] * (v_a[k] - v_b[k]);
+    const double c_b = in.cs[b];
+    // Viscosity acts on approaching pairs only (Pi_ab = 0 otherwise).
+    const double Pi = r_dot_v < 0 ? physics::artificial_viscosity(viscosity, r_dot_v, r2, particle_a,
+                                                                  {in.rho[b], c_b, h_b, in.balsara[b]})
+                                  : 0.0;
+    const double bracket = (term_a * F_a + in.pressure_term[b] * F_b) + Pi * F_ab;
+    const double m_b = in.m[b];
+    for (int k = 0; k < D; ++k) sum_v[k] -= m_b * bracket * r[k];
+    sum_u += m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v;
+    if constexpr (Conductivity)
+      sum_u += m_b * physics::artificial_conductivity(conductivity, in.u[a], in.u[b], in.P[a], in.P[b], rho_a,
+                                                      in.rho[b], F_ab * distance);
+    largest = std::max(largest, r_dot_v < 0 ? physics::signal_velocity(c_a, c_b, r_dot_v, distance) : c_a + c_b);
+  }
+  dv_dt = sum_v;
+  du = sum_u;
+  signal = largest;
+}
+} // namespace detail
 
 /// Accelerations and du/dt of every owned particle; returns the smallest time step over the owned
 /// fluid particles (the largest double when there is none):
@@ -34,59 +89,34 @@ double compute_forces(const neighbourhood<D>& neighbours, physics_settings setti
                       accessor<double, ro, ro> cs, accessor<double, ro, ro> pressure_term,
                       accessor<double, ro, ro> u, accessor<double, ro, ro> balsara, accessor<particle_kind, ro> kind,
                       accessor<vector<D>, wo> acceleration, accessor<double, wo> du_dt) {
-  flecsi_lite::timers::scoped timer("sph::forces");  // the executor times tasks, not reductions
   const neighbour_walk<D> walk(neighbours);
-  const physics::viscosity_parameters viscosity = settings.viscosity;
-  const double conductivity = settings.conductivity;
-  const double support2 = physics::kernel_support * physics::kernel_support;
+  const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
+                                   P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
   double smallest = std::numeric_limits<double>::max();
-  physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel_type) {
+  const auto loop = [&](auto kernel_type, auto with_conductivity) {
     using Kernel = decltype(kernel_type);
-    flecsi_lite::forall_reduce(
+    for_each_target(
       neighbours.size(),
       [&](std::size_t a, double& local_smallest) {
-        const vector<D> x_a = x(a), v_a = v(a);
-        const double h_a = h(a), rho_a = rho(a), P_a = P(a), u_a = u(a), c_a = cs(a), term_a = pressure_term(a);
-        const kernel_at<Kernel> kernel_a(h_a);
-        const physics::viscosity_particle particle_a{rho_a, c_a, h_a, balsara(a)};
-        vector<D> dv_dt{}, r;
-        double du = 0, signal = c_a;
-        for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-          const std::size_t b = walk.neighbour(j);
-          const double r2 = walk.separation(x_a, x(b), j, r);
-          const double h_b = h(b), h_max = std::max(h_a, h_b);
-          if (r2 >= support2 * h_max * h_max || r2 == 0) continue;
-          const double distance = std::sqrt(r2);
-          const double F_a = kernel_a.gradient_factor(distance);
-          const double F_b = kernel_at<Kernel>(h_b).gradient_factor(distance);
-          const double F_ab = 0.5 * (F_a + F_b);
-          const vector<D>& v_b = v(b);
-          double r_dot_v = 0;
-          for (int k = 0; k < D; ++k) r_dot_v += r[k] * (v_a[k] - v_b[k]);
-          const double rho_b = rho(b), c_b = cs(b);
-          // Viscosity acts on approaching pairs only (Pi_ab = 0 otherwise).
-          const double Pi = r_dot_v < 0 ? physics::artificial_viscosity(viscosity, r_dot_v, r2, particle_a,
-                                                                        {rho_b, c_b, h_b, balsara(b)})
-                                        : 0.0;
-          const double bracket = (term_a * F_a + pressure_term(b) * F_b) + Pi * F_ab;
-          const double m_b = m(b);
-          for (int k = 0; k < D; ++k) dv_dt[k] -= m_b * bracket * r[k];
-          du += m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v;
-          if (conductivity > 0)
-            du += m_b * physics::artificial_conductivity(conductivity, u_a, u(b), P_a, P(b), rho_a, rho_b,
-                                                         F_ab * distance);
-          signal = std::max(signal, r_dot_v < 0 ? physics::signal_velocity(c_a, c_b, r_dot_v, distance) : c_a + c_b);
-        }
+        vector<D> dv_dt;
+        double du, signal;
+        detail::force_sums<Kernel, decltype(with_conductivity)::value, D>(walk, a, in, settings.viscosity,
+                                                                       settings.conductivity, dv_dt, du, signal);
         acceleration(a) = dv_dt;
         du_dt(a) = du;
         if (kind(a) != particle_kind::fluid) return;
         double a2 = 0;
         for (int k = 0; k < D; ++k) a2 += dv_dt[k] * dv_dt[k];
+        const double h_a = in.h[a];
         double dt = physics::courant_time_step(settings.courant, h_a, signal);
         if (a2 > 0) dt = std::min(dt, settings.acceleration_factor * std::sqrt(h_a / std::sqrt(a2)));
         local_smallest = std::min(local_smallest, dt);
       },
       Kokkos::Min<double>(smallest), "sph::compute_forces");
+  };
+  physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel_type) {
+    if (settings.conductivity > 0) loop(kernel_type, std::true_type{});
+    else loop(kernel_type, std::false_type{});
   });
   return smallest;
 }

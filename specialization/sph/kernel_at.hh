@@ -27,12 +27,12 @@ struct kernel_at {
     return gradient_norm * shape::template derivative_over_q<D>(r * inverse_h);
   }
 
-  /// W(r, h) and dW/dh(r, h) from one evaluation of the shape.
+  /// W(r, h) and dW/dh(r, h) from one evaluation of the shape (q f'(q), with no division).
   void value_and_h_derivative(double r, double& w, double& dw_dh) const {
     const double q = r * inverse_h;
     const double f = shape::template value<D>(q);
     w = value_norm * f;
-    dw_dh = -h_norm * (D * f + q * q * shape::template derivative_over_q<D>(q));
+    dw_dh = -h_norm * (D * f + shape::template q_derivative<D>(q));
   }
 };
 

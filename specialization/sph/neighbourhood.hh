@@ -1,12 +1,13 @@
 // The neighbour lists the SPH tasks sum over (compressed sparse rows over the owned particles,
-// neighbours as storage indices, owned or ghost, in the canonical (key, id) order) and the
-// periodic image shifts; filled by the ntree search (seed Algorithm 2), so that the physics does not
-// depend on the tree.
+// neighbours as storage indices, owned or ghost, in the canonical (key, id) order, each with
+// its periodic image shift); filled by the ntree search (seed Algorithm 2), so that the physics
+// does not depend on the tree.
 #pragma once
 
 #include "specialization/sph/fields.hh"
 
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/util/kokkos.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 
 #include <array>
@@ -21,14 +22,14 @@ namespace tree = flecsi_lite::topology::ntree;
 /// x_b + shift, so that the separation is r_ab = x_a - (x_b + shift). The lists hold, for every
 /// owned a, at least every b with |r_ab| < reach * max(h_a, h_b) for the h values they were
 /// searched with, in ascending (key, id) order: sums over them do not depend on the rank count.
+/// Each entry packs b with its shift code (ntree::shift_storage::packed): 4 bytes per entry.
 template<int D>
 struct neighbourhood {
-  tree::neighbour_lists lists;  ///< offsets per owned particle, neighbours, shift codes if periodic
+  tree::neighbour_lists lists;  ///< offsets per owned particle, packed entries (b, shift code)
   std::array<vector<D>, tree::shift_code_count<D>> shift_table{};  ///< displacement per shift code
   double reach = 2.0;  ///< search radius in units of h (>= the kernel support 2)
 
   std::size_t size() const { return lists.size(); }
-  bool periodic() const { return !lists.shifts.empty(); }
   /// Mean number of neighbours per target (itself included).
   double mean_count() const { return size() ? double(lists.total()) / double(size()) : 0.0; }
 };
@@ -37,44 +38,45 @@ struct neighbourhood {
 template<int D>
 struct neighbour_walk {
   const std::size_t* offsets;
-  const std::uint32_t* neighbours;
-  const tree::shift_code* shifts;  // null without periodic axes
+  const std::uint32_t* entries;
   const vector<D>* shift_table;
 
   explicit neighbour_walk(const neighbourhood<D>& n)
-    : offsets(n.lists.offsets.data()), neighbours(n.lists.neighbours.data()),
-      shifts(n.periodic() ? n.lists.shifts.data() : nullptr), shift_table(n.shift_table.data()) {}
+    : offsets(n.lists.offsets.data()), entries(n.lists.neighbours.data()), shift_table(n.shift_table.data()) {}
 
   std::size_t begin(std::size_t a) const { return offsets[a]; }
   std::size_t end(std::size_t a) const { return offsets[a + 1]; }
-  std::size_t neighbour(std::size_t j) const { return neighbours[j]; }
+  std::size_t neighbour(std::size_t j) const { return tree::packed_neighbour(entries[j]); }
 
   /// r_ab = (x_a - x_b) - shift_j for entry j of a's list, and |r_ab|^2. Grouped so that the
   /// pair (b, a), seen under the opposite shift, gives exactly the negated vector and the same
   /// squared distance: pair terms are then antisymmetric to the last bit.
   double separation(const vector<D>& x_a, const vector<D>& x_b, std::size_t j, vector<D>& r) const {
+    const vector<D>& s = shift_table[tree::packed_shift(entries[j])];
     double r2 = 0;
-    if (shifts) {
-      const vector<D>& s = shift_table[shifts[j]];
-      for (int k = 0; k < D; ++k) {
-        r[k] = (x_a[k] - x_b[k]) - s[k];
-        r2 += r[k] * r[k];
-      }
-    } else {
-      for (int k = 0; k < D; ++k) {
-        r[k] = x_a[k] - x_b[k];
-        r2 += r[k] * r[k];
-      }
+    for (int k = 0; k < D; ++k) {
+      r[k] = (x_a[k] - x_b[k]) - s[k];
+      r2 += r[k] * r[k];
     }
     return r2;
   }
 };
 
+/// reduce(a, partial) for every owned particle a of a neighbourhood, the loop of the pair tasks:
+/// dynamically scheduled in chunks, because the work per particle varies (Newton iterations of h,
+/// viscous pairs near shocks) and an even split of the particles leaves a thread waiting. Each
+/// particle's own sums are unchanged by the schedule.
+template<class Reducer, class Body>
+void for_each_target(std::size_t n, const Body& body, Reducer reducer, const char* name) {
+  using policy = Kokkos::RangePolicy<flecsi_lite::execution_space, Kokkos::Schedule<Kokkos::Dynamic>>;
+  Kokkos::parallel_reduce(name, policy(0, n).set_chunk_size(256), body, reducer);
+}
+
 /// Fills `out` from the tree's search over owned targets (symmetric criterion, reach =
 /// the tree's support). Call after ntree::distribute(), or refresh_local_tree().
 template<int D>
 void find_neighbours(particle_tree<D>& p, neighbourhood<D>& out) {
-  p.find_neighbours(out.lists, tree::interaction::symmetric);
+  p.find_neighbours(out.lists, tree::interaction::symmetric, tree::shift_storage::packed);
   const auto table = p.space().shift_table();
   for (std::size_t c = 0; c < table.size(); ++c)
     for (int k = 0; k < D; ++k) out.shift_table[c][k] = table[c][k];

@@ -4,6 +4,8 @@
 #pragma once
 
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/list_filter.hh"
+#include "flecsi_lite/topology/ntree/neighbour_list_builder.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 #include "flecsi_lite/topology/ntree/radius_search.hh"
@@ -59,41 +61,43 @@ public:
         [&](std::size_t, workspace& work, auto kind, auto periodic) {
           walk_group<decltype(kind)::value, decltype(periodic)::value>(
             tree, shifts, space.allowed_shifts(), work,
-            [&](std::size_t a, std::size_t b, shift_code code) {
-              call_apply<D>(apply, a, b, code, shifts);
+            [&](std::size_t a, std::size_t count, const auto& neighbour, const auto& shift) {
+              for (std::size_t i = 0; i < count; ++i) call_apply<D>(apply, a, neighbour(i), shift(i), shifts);
             });
         });
   }
 
-  /// Neighbour lists of all targets (shift codes too when the domain is periodic).
+  /// Neighbour lists of all targets, written as `layout` says (by default: one row per
+  /// particle, tree indices, separate shift codes when the domain is periodic).
   void find_neighbours(const hashed_tree<D>& tree, const domain<D>& space,
-                       neighbour_lists& out) {
-    const bool periodic_domain = space.any_periodic();
+                       neighbour_lists& out, const list_layout& layout = {}) {
+    const auto kind = neighbour_list_builder::entries_for(layout, space.any_periodic(), tree.size());
+    const std::size_t* rename = layout.rename;
     const auto shifts = space.shift_table();
-    std::size_t* counts = nullptr;
     const auto prepare = [&](std::size_t chunks) {
-      builder_.start(tree.size(), chunks, out);
-      // Chunk c works on consecutive groups, so its targets start at its first group's begin.
-      for (std::size_t c = 0; c < chunks && !groups_.empty(); ++c)
-        builder_[c].first_target = tree.node(groups_[groups_.size() * c / chunks]).begin;
-      counts = out.offsets.data();
+      builder_.start(rename ? layout.rows : tree.size(), chunks, out, kind);
     };
     run(tree, space, prepare,
-        [&](std::size_t chunk, workspace& work, auto kind, auto periodic) {
+        [&](std::size_t chunk, workspace& work, auto interaction_kind, auto periodic) {
           auto& part = builder_[chunk];
-          walk_group<decltype(kind)::value, decltype(periodic)::value>(
+          walk_group<decltype(interaction_kind)::value, decltype(periodic)::value>(
             tree, shifts, space.allowed_shifts(), work,
-            [&](std::size_t a, std::size_t b, shift_code code) {
-              part.neighbours.push_back(static_cast<std::uint32_t>(b));
-              if (periodic_domain) part.shifts.push_back(code);
-              ++counts[a];
+            [&](std::size_t a, std::size_t count, const auto& neighbour, const auto& shift) {
+              part.append(rename ? rename[a] : a, count, neighbour, shift, rename, kind);
             });
         });
-    builder_.finish(out, periodic_domain);
+    builder_.finish(out, kind);
   }
 
   /// The groups (node indices, in ascending particle order) of the last walk.
   const std::vector<std::uint32_t>& groups() const { return groups_; }
+
+  /// Memory held between walks: the groups and the per-thread workspaces.
+  std::size_t bytes() const {
+    std::size_t total = (groups_.capacity() + group_stack_.capacity()) * sizeof(std::uint32_t);
+    for (const workspace& work : workspaces_) total += work.bytes();
+    return total;
+  }
 
   /// Total length of the interaction lists of the last walk (a cost diagnostic).
   std::size_t interaction_list_entries() const {
@@ -112,9 +116,13 @@ private:
     std::vector<std::uint32_t> index;
     std::vector<shift_code> shift;
     std::array<std::vector<double>, D> position;
-    std::vector<double> h;
+    std::vector<double> reach_squared;  // (support h_b)^2 of each source (symmetric searches)
     std::vector<std::uint32_t> hits; // per-target scratch: list entries that are neighbours
-    std::vector<double> distance;    // per-target scratch: squared distances to the list
+
+    std::size_t bytes() const {
+      return index.capacity() * (sizeof(std::uint32_t) + sizeof(shift_code) + (D + 1) * sizeof(double) +
+                                 sizeof(std::uint32_t));
+    }
 
     void reserve(std::size_t size) {
       if (index.size() >= size) return;
@@ -122,9 +130,8 @@ private:
       index.resize(grown);
       shift.resize(grown);
       for (auto& axis : position) axis.resize(grown);
-      h.resize(grown);
+      reach_squared.resize(grown);
       hits.resize(grown);
-      distance.resize(grown);
     }
   };
 
@@ -176,7 +183,8 @@ private:
   }
 
   // Steps 2 and 3 (INTERACTION_LIST, APPLY_SUB_TREE) for the group work.group: calls
-  // emit(a, b, code) for every target a of the group and each neighbour, ascending b per a.
+  // emit(a, count, neighbour, shift) once for every target a of the group, whose neighbours
+  // are neighbour(i) under shift code shift(i), i < count, in ascending neighbour order.
   template<interaction Kind, bool Periodic, class Emit>
   void walk_group(const hashed_tree<D>& tree,
                   const std::array<point<D>, shift_code_count<D>>& shifts,
@@ -200,7 +208,10 @@ private:
       for (std::uint32_t a = group.begin; a < group.end; ++a) {
         if (!search_.is_target(a)) continue;
         walk_target<D, Kind, Periodic>(tree, shifts, allowed, positions[a], h[a], support,
-                                       [&](std::size_t b, shift_code c) { emit(a, b, c); });
+                                       [&](std::size_t b, shift_code c) {
+                                         emit(a, 1, [b](std::size_t) { return b; },
+                                              [c](std::size_t) { return c; });
+                                       });
       }
       return;
     }
@@ -208,42 +219,19 @@ private:
     const std::size_t length = work.length;
     const std::uint32_t* index = work.index.data();
     const shift_code* code = work.shift.data();
-    const double* source_h = work.h.data();
-    std::uint32_t* __restrict hits = work.hits.data();
-    double* __restrict distance = work.distance.data();
+    std::uint32_t* hits = work.hits.data();
     std::array<const double*, D> source_x;
     for (int k = 0; k < D; ++k) source_x[k] = work.position[k].data();
     for (std::uint32_t a = group.begin; a < group.end; ++a) {
       if (!search_.is_target(a)) continue;
-      const point<D> x = positions[a];
-      const double h_a = h[a];
-      // Squared distances to the whole list (a vectorisable loop), then a branch-free
-      // compaction of the hits: the criterion's outcome is data the branch predictor cannot
-      // learn, so branching on it per entry would cost more than the arithmetic.
-      for (std::size_t j = 0; j < length; ++j) {
-        double r2 = 0;
-        for (int k = 0; k < D; ++k) {
-          const double d = x[k] - source_x[k][j];
-          r2 += d * d;
-        }
-        distance[j] = r2;
-      }
-      std::size_t count = 0;
-      if constexpr (Kind == interaction::gather) {
-        const double radius = interaction_radius<Kind>(support, h_a, 0.0);
-        const double radius_squared = radius * radius; // within_radius, hoisted
-        for (std::size_t j = 0; j < length; ++j) {
-          hits[count] = static_cast<std::uint32_t>(j);
-          count += distance[j] < radius_squared;
-        }
-      } else {
-        for (std::size_t j = 0; j < length; ++j) {
-          hits[count] = static_cast<std::uint32_t>(j);
-          count += within_radius(distance[j], interaction_radius<Kind>(support, h_a, source_h[j]));
-        }
-      }
-      for (std::size_t i = 0; i < count; ++i)
-        emit(a, index[hits[i]], Periodic ? code[hits[i]] : zero_shift<D>);
+      // Symmetric: (support max(h_a, h_b))^2 = max((support h_a)^2, (support h_b)^2), rounding
+      // being monotonic: the decision of within_radius and interaction_radius.
+      const double radius = interaction_radius<Kind>(support, h[a], 0.0);
+      const std::size_t count =
+        within_reach<D>(positions[a], source_x, length, radius * radius,
+                        Kind == interaction::symmetric ? work.reach_squared.data() : nullptr, hits);
+      emit(a, count, [index, hits](std::size_t i) { return index[hits[i]]; },
+           [code, hits](std::size_t i) { return Periodic ? code[hits[i]] : zero_shift<D>; });
     }
   }
 
@@ -287,29 +275,30 @@ private:
       work.reserve(length + images * (node.end - node.begin));
       std::uint32_t* __restrict index = work.index.data();
       shift_code* __restrict code = work.shift.data();
-      double* __restrict source_h = work.h.data();
+      double* __restrict source_reach_squared = work.reach_squared.data();
       std::array<double*, D> source_x;
       for (int k = 0; k < D; ++k) source_x[k] = work.position[k].data();
       // Every candidate is written, and kept by advancing `length` only if within reach.
-      const auto keep = [&](std::uint32_t b, shift_code c, const point<D>& image, bool within) {
+      const auto keep = [&](std::uint32_t b, shift_code c, const point<D>& image, double radius_b, bool within) {
         index[length] = b;
         code[length] = c;
         for (int k = 0; k < D; ++k) source_x[k][length] = image[k];
-        source_h[length] = h[b];
+        source_reach_squared[length] = radius_b * radius_b;
         length += within;
       };
       for (std::uint32_t b = node.begin; b < node.end; ++b) {
-        const double reach_b = interaction_radius<Kind>(1.0, group_radius, support * h[b]);
+        const double radius_b = support * h[b];
+        const double reach_b = interaction_radius<Kind>(1.0, group_radius, radius_b);
         if constexpr (Periodic) {
           for (std::uint32_t rest = entry.shifts; rest != 0; rest &= rest - 1) {
             const int c = __builtin_ctz(rest);
             point<D> image;
             for (int k = 0; k < D; ++k) image[k] = positions[b][k] + shifts[c][k];
-            keep(b, static_cast<shift_code>(c), image,
+            keep(b, static_cast<shift_code>(c), image, radius_b,
                  within_radius(distance_squared<D>(targets, image), reach_b));
           }
         } else {
-          keep(b, zero_shift<D>, positions[b],
+          keep(b, zero_shift<D>, positions[b], radius_b,
                within_radius(distance_squared<D>(targets, positions[b]), reach_b));
         }
       }

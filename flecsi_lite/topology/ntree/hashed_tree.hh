@@ -91,9 +91,17 @@ public:
     h_ = h;
     quadrupoles_.assign(options_.quadrupole ? nodes_.size() : 0, quadrupole<D>{});
     search_nodes_.resize(nodes_.size());
-    for (int l = depth(); l >= 0; --l)
-      host_for("ntree::hashed_tree::refit", level_size(l),
-               [this, l](std::size_t i) { compute_node(level_begin_[l] + i); });
+    // Levels of few nodes are done in place: a parallel loop costs a fork and a join, which on
+    // a loaded machine can wait for a thread that is not running.
+    constexpr std::size_t parallel_level_size = 1024;
+    for (int l = depth(); l >= 0; --l) {
+      if (level_size(l) < parallel_level_size) {
+        for (std::uint32_t i = level_begin_[l]; i < level_begin_[l + 1]; ++i) compute_node(i);
+      } else {
+        host_for("ntree::hashed_tree::refit", level_size(l),
+                 [this, l](std::size_t i) { compute_node(level_begin_[l] + i); });
+      }
+    }
   }
 
   /// Number of particles.

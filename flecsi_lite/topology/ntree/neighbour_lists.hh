@@ -1,5 +1,6 @@
 // Vocabulary shared by the ntree neighbour searches: the pair criterion (gather or symmetric
-// radius in units of h), search options, and neighbour lists in compressed sparse row form.
+// radius in units of h), search options, and neighbour lists in compressed sparse row form with
+// their layouts (image shift codes separate or packed into the entries, renamed rows).
 #pragma once
 
 #include "flecsi_lite/topology/ntree/host_parallel.hh"
@@ -8,7 +9,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace flecsi_lite::topology::ntree {
@@ -53,9 +53,30 @@ struct search_options {
   bool is_target(std::size_t i) const { return targets == nullptr || targets[i] != 0; }
 };
 
+/// Where neighbour lists keep the image shift code of each entry (periodic domains):
+///   separate  in neighbour_lists::shifts, one byte per entry;
+///   packed    in the top 32 - packed_index_bits = 5 bits of the entry itself (packed_entry), on every
+///             domain (zero_shift when it is not periodic): 4 bytes per entry, at most 2^27
+///             particles in the tree.
+enum class shift_storage { separate, packed };
+
+inline constexpr int packed_index_bits = 27;
+inline constexpr std::uint32_t packed_index_mask = (std::uint32_t{1} << packed_index_bits) - 1;
+static_assert(shift_code_count<3> <= (1 << (32 - packed_index_bits)), "shift codes must fit the top bits");
+
+/// A packed entry: neighbour b (< 2^27) and its shift code.
+inline std::uint32_t packed_entry(std::uint32_t b, shift_code code) {
+  return b | static_cast<std::uint32_t>(code) << packed_index_bits;
+}
+inline std::uint32_t packed_neighbour(std::uint32_t entry) { return entry & packed_index_mask; }
+inline shift_code packed_shift(std::uint32_t entry) {
+  return static_cast<shift_code>(entry >> packed_index_bits);
+}
+
 /// Neighbours of every target in compressed sparse row form: those of particle a are
 /// neighbours[offsets[a] .. offsets[a + 1]), in ascending sorted index; a non-target has none.
-/// With a periodic domain, shifts[j] is the image shift code of entry j (x_b + shift).
+/// With a periodic domain, shifts[j] is the image shift code of entry j (x_b + shift), unless
+/// the codes are packed into the entries (shift_storage::packed).
 struct neighbour_lists {
   std::vector<std::size_t> offsets{0};
   std::vector<std::uint32_t> neighbours;
@@ -66,54 +87,16 @@ struct neighbour_lists {
   std::size_t total() const { return neighbours.size(); }
 };
 
-/// Parallel assembly of neighbour_lists: the targets are cut into chunks of contiguous sorted
-/// indices, each worked on by one thread that appends its entries to the chunk's own buffers and
-/// writes the counts of its targets; then offsets are scanned and the buffers copied in place.
-/// Buffers are kept between searches, so a steady state allocates nothing.
-class neighbour_list_builder {
-public:
-  struct chunk {
-    std::size_t first_target = 0;
-    std::vector<std::uint32_t> neighbours;
-    std::vector<shift_code> shifts;
-  };
-
-  /// Prepares `out` for n particles (all counts zero) and `chunk_count` empty chunks.
-  void start(std::size_t n, std::size_t chunk_count, neighbour_lists& out) {
-    out.offsets.assign(n + 1, 0);
-    if (chunks_.size() < chunk_count) chunks_.resize(chunk_count);
-    chunk_count_ = chunk_count;
-    for (std::size_t c = 0; c < chunk_count; ++c) {
-      chunks_[c].first_target = 0;
-      chunks_[c].neighbours.clear();
-      chunks_[c].shifts.clear();
-    }
-  }
-
-  chunk& operator[](std::size_t c) { return chunks_[c]; }
-
-  /// Turns the counts in out.offsets into offsets and gathers the chunks' entries.
-  void finish(neighbour_lists& out, bool with_shifts) {
-    const std::size_t n = out.offsets.size() - 1;
-    const std::size_t total = host_exclusive_scan("ntree::neighbour_lists::offsets",
-                                                  out.offsets.data(), n + 1);
-    out.neighbours.resize(total);
-    out.shifts.resize(with_shifts ? total : 0);
-    host_for("ntree::neighbour_lists::gather", chunk_count_, [&](std::size_t c) {
-      const chunk& part = chunks_[c];
-      if (part.neighbours.empty()) return;
-      const std::size_t at = out.offsets[part.first_target];
-      std::memcpy(out.neighbours.data() + at, part.neighbours.data(),
-                  part.neighbours.size() * sizeof(std::uint32_t));
-      if (with_shifts)
-        std::memcpy(out.shifts.data() + at, part.shifts.data(),
-                    part.shifts.size() * sizeof(shift_code));
-    });
-  }
-
-private:
-  std::vector<chunk> chunks_;
-  std::size_t chunk_count_ = 0;
+/// How a search writes its lists. By default row a is particle a of the tree (empty for a
+/// non-target) and entries are tree indices, with separate shift codes on a periodic domain.
+struct list_layout {
+  /// When set, target a fills row rename[a] and neighbour b is written as rename[b] (e.g. the
+  /// topology's storage indices), `rows` rows in all. The renaming must keep the targets in
+  /// ascending order (rename[a] < rename[a'] for targets a < a'): chunks of consecutive
+  /// targets then fill consecutive rows, and each row is written once, in place.
+  const std::size_t* rename = nullptr;
+  std::size_t rows = 0;
+  shift_storage shifts = shift_storage::separate;
 };
 
 /// How many chunks to cut `work_items` items into for dynamic scheduling over the host threads.

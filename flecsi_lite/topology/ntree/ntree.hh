@@ -109,9 +109,11 @@ public:
   const std::vector<std::size_t>& sorted_to_storage() const { return local_.sorted_to_storage(); }
 
   /// Neighbour lists of the owned particles (storage indices; neighbours in ascending (key, id)
-  /// order, so sums over them do not depend on the rank count), reach settings().support.
-  void find_neighbours(neighbour_lists& out, interaction kind = interaction::symmetric) {
-    local_.find_neighbours(kind, config_.support, space_, out);
+  /// order, so sums over them do not depend on the rank count), reach settings().support, with
+  /// the image shift codes stored as `shifts` says.
+  void find_neighbours(neighbour_lists& out, interaction kind = interaction::symmetric,
+                       shift_storage shifts = shift_storage::separate) {
+    local_.find_neighbours(kind, config_.support, space_, out, {}, shifts);
   }
   /// apply(a, b, shift) for every owned a and neighbour b (storage indices), called in parallel
   /// over groups of targets (the calls for one a come from one thread), see local_tree.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/neighbour_list_builder.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 #include "flecsi_lite/topology/ntree/search_dispatch.hh"
@@ -116,32 +117,28 @@ public:
     check_periodic_reach(tree, space, options_.support);
     const std::size_t n = tree.size();
     const std::size_t chunks = chunk_count_for(n);
-    builder_.start(n, chunks, out);
+    const auto entries = neighbour_list_builder::entries_for({}, space.any_periodic(), n);
+    builder_.start(n, chunks, out, entries);
     const auto shifts = space.shift_table();
     const std::uint32_t allowed = space.allowed_shifts();
     const bool periodic_domain = space.any_periodic();
     const search_options options = options_;
-    std::size_t* counts = out.offsets.data();
     dispatch_search(options.kind, periodic_domain, [&](auto kind, auto periodic) {
       host_for_dynamic("ntree::radius_search::lists", chunks, [&](std::size_t c) {
         auto& part = builder_[c];
         const std::size_t first = n * c / chunks;
         const std::size_t last = n * (c + 1) / chunks;
-        part.first_target = first;
         for (std::size_t a = first; a < last; ++a) {
           if (!options.is_target(a)) continue;
-          const std::size_t before = part.neighbours.size();
           walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
             tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a],
             options.support, [&](std::size_t b, shift_code code) {
-              part.neighbours.push_back(static_cast<std::uint32_t>(b));
-              if (periodic_domain) part.shifts.push_back(code);
+              part.append(a, static_cast<std::uint32_t>(b), code, entries);
             });
-          counts[a] = part.neighbours.size() - before;
         }
       });
     });
-    builder_.finish(out, periodic_domain);
+    builder_.finish(out, entries);
   }
 
 private:

@@ -4,6 +4,9 @@
 
 #include "specialization/physics/kernels/radial_kernel.hh"
 
+#include <algorithm>
+#include <cmath>
+
 namespace flecsph::physics {
 
 struct cubic_spline_shape {
@@ -17,11 +20,21 @@ struct cubic_spline_shape {
     else return 1.0 / pi;
   }
 
+  // The density loop evaluates f and q f'(q) for neighbours in random order of q: there, with
+  // a = max(2 - q, 0) and b = max(1 - q, 0) (Monaghan 1992, ARA&A 30, 543),
+  //   f(q) = (a^3 - 4 b^3) / 4  and  q f'(q) = -3/4 q (a + 2b)(a - 2b),  a - 2b = min(q, a),
+  // need no branch on q and no division by it.
   template<int D>
   KOKKOS_INLINE_FUNCTION static double value(double q) {
-    if (q < 1.0) return 1.0 - 1.5 * q * q + 0.75 * q * q * q;
-    if (q < 2.0) return 0.25 * integer_power<3>(2.0 - q);
-    return 0.0;
+    const double a = outer_part(q), b = inner_part(q);
+    return 0.25 * (a * a * a - 4.0 * (b * b * b));
+  }
+
+  /// q f'(q): -3 q^2 + 9/4 q^3 on [0,1], -3/4 q (2-q)^2 on [1,2].
+  template<int D>
+  KOKKOS_INLINE_FUNCTION static double q_derivative(double q) {
+    const double a = outer_part(q), b = inner_part(q);
+    return -0.75 * q * (a + 2.0 * b) * std::min(q, a);
   }
 
   /// f'(q)/q: -3 + 9/4 q on [0,1], -3/4 (2-q)^2 / q on [1,2].
@@ -31,6 +44,12 @@ struct cubic_spline_shape {
     if (q < 2.0) return -0.75 * integer_power<2>(2.0 - q) / q;
     return 0.0;
   }
+
+private:
+  // max(x, 0) as (x + |x|) / 2, exact: a form compilers do not turn back into a branch.
+  KOKKOS_INLINE_FUNCTION static double positive_part(double x) { return 0.5 * (x + std::fabs(x)); }
+  KOKKOS_INLINE_FUNCTION static double outer_part(double q) { return positive_part(2.0 - q); }
+  KOKKOS_INLINE_FUNCTION static double inner_part(double q) { return positive_part(1.0 - q); }
 };
 
 template<int D>

@@ -20,10 +20,20 @@ inline constexpr double pi = 3.14159265358979323846;
 /// Support radius of every kernel in units of h: particles interact when |r| < 2h.
 inline constexpr double kernel_support = 2.0;
 
+/// For shapes whose f'(q)/q is a polynomial in q (no division): q f'(q) = q^2 (f'(q)/q).
+template<class Shape>
+struct polynomial_derivative_forms {
+  template<int D>
+  KOKKOS_INLINE_FUNCTION static double q_derivative(double q) {
+    return q * q * Shape::template derivative_over_q<D>(q);
+  }
+};
+
 /// The kernel in dimension D built from `Shape`, which provides, for q = r/h:
 ///   normalization<D>()       sigma_D, so that the kernel integrates to 1 over R^D;
 ///   value<D>(q)              f(q), zero for q >= 2;
-///   derivative_over_q<D>(q)  f'(q)/q, finite at q = 0 (every shape here has f'(0) = 0).
+///   derivative_over_q<D>(q)  f'(q)/q, finite at q = 0 (every shape here has f'(0) = 0);
+///   q_derivative<D>(q)       q f'(q), with no division (for dW/dh in the density loop).
 /// All functions are static: a kernel object is an empty tag, cheap to capture in a Kokkos lambda.
 template<class Shape, int D>
 struct radial_kernel {
@@ -62,7 +72,7 @@ struct radial_kernel {
     const double inverse_h = 1.0 / h;
     const double q = r * inverse_h;
     return -sigma * integer_power<D + 1>(inverse_h) *
-           (D * Shape::template value<D>(q) + q * q * Shape::template derivative_over_q<D>(q));
+           (D * Shape::template value<D>(q) + Shape::template q_derivative<D>(q));
   }
 };
 

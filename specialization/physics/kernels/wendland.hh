@@ -10,7 +10,7 @@ namespace flecsph::physics {
 // sigma_D = N_D / 2^D, and (1/q) d psi(q/2)/dq = (psi'(s)/s) / 4. D = 1 uses the 1D Wendland
 // function of the same smoothness; D = 2 and 3 share one function with different N_D.
 
-struct wendland_c2_shape {
+struct wendland_c2_shape : polynomial_derivative_forms<wendland_c2_shape> {
   static constexpr const char* name = "wendland_c2";
 
   template<int D>
@@ -39,7 +39,7 @@ struct wendland_c2_shape {
   }
 };
 
-struct wendland_c4_shape {
+struct wendland_c4_shape : polynomial_derivative_forms<wendland_c4_shape> {
   static constexpr const char* name = "wendland_c4";
 
   template<int D>
@@ -68,7 +68,7 @@ struct wendland_c4_shape {
   }
 };
 
-struct wendland_c6_shape {
+struct wendland_c6_shape : polynomial_derivative_forms<wendland_c6_shape> {
   static constexpr const char* name = "wendland_c6";
 
   template<int D>

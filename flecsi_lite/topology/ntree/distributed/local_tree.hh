@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 namespace flecsi_lite::topology::ntree {
@@ -43,6 +44,10 @@ public:
       storage_to_sorted_[sorted_to_storage_[s]] = s;
       owned_mask_[s] = sorted_to_storage_[s] < owned_;
     });
+    // The lists are written in place (find_neighbours), row = storage index of the target.
+    for (std::size_t a = 1; a < owned; ++a)
+      if (storage_to_sorted_[a - 1] > storage_to_sorted_[a])
+        throw std::logic_error("ntree::local_tree: the owned particles are not in (key, id) order");
     gather(x, m, h);
     tree_.build(keys_.data(), x_.data(), m_.data(), h_.data(), total, options);
   }
@@ -61,6 +66,12 @@ public:
   const std::vector<std::size_t>& storage_to_sorted() const { return storage_to_sorted_; }
   /// owned_mask()[s] is 1 when sorted particle s is owned (search_options::targets).
   const std::vector<std::uint8_t>& owned_mask() const { return owned_mask_; }
+  /// Memory held: the sorted copies, the index maps, the tree and the search workspaces.
+  std::size_t bytes() const {
+    const std::size_t per_particle = 2 * sizeof(std::size_t) + sizeof(std::uint8_t) + sizeof(key_type) +
+                                     sizeof(std::uint64_t) + sizeof(point<D>) + 2 * sizeof(double);
+    return sorted_to_storage_.capacity() * per_particle + tree_.bytes() + walk_.bytes();
+  }
   /// Sorted copies of the particle data the tree was built from.
   const std::vector<key_type>& keys() const { return keys_; }
   const std::vector<std::uint64_t>& ids() const { return ids_; }
@@ -69,27 +80,17 @@ public:
   const std::vector<double>& smoothing_lengths() const { return h_; }
 
   /// Neighbour lists of every owned particle, indexed by its storage index a < owned_size(),
-  /// with neighbours (owned or ghost) as storage indices in ascending (key, id) order; shift
-  /// codes too when `space` is periodic. Uses the group walk (seed Algorithm 2).
+  /// with neighbours (owned or ghost) as storage indices in ascending (key, id) order and their
+  /// shift codes stored as `shifts` says. Uses the group walk (seed Algorithm 2), which writes
+  /// the lists in place: owned storage order is the sorted order of the owned particles.
   void find_neighbours(interaction kind, double support, const domain<D>& space, neighbour_lists& out,
-                       const group_options& groups = {}) {
-    group_walk<D>& walk = walk_for(kind, support, groups);
-    walk.find_neighbours(tree_, space, sorted_lists_);
-    const std::size_t owned = owned_;
-    out.offsets.assign(owned + 1, 0);
-    for (std::size_t a = 0; a < owned; ++a)
-      out.offsets[a + 1] = out.offsets[a] + sorted_lists_.count(storage_to_sorted_[a]);
-    out.neighbours.resize(out.offsets[owned]);
-    const bool periodic = !sorted_lists_.shifts.empty();
-    out.shifts.resize(periodic ? out.neighbours.size() : 0);
-    host_for("ntree::local_tree::storage_lists", owned, [&](std::size_t a) {
-      const std::size_t s = storage_to_sorted_[a];
-      std::size_t at = out.offsets[a];
-      for (std::size_t j = sorted_lists_.offsets[s]; j < sorted_lists_.offsets[s + 1]; ++j, ++at) {
-        out.neighbours[at] = static_cast<std::uint32_t>(sorted_to_storage_[sorted_lists_.neighbours[j]]);
-        if (periodic) out.shifts[at] = sorted_lists_.shifts[j];
-      }
-    });
+                       const group_options& groups = {}, shift_storage shifts = shift_storage::separate) {
+    list_layout layout;
+    // Without ghosts the sorted order is the storage order: no renaming.
+    layout.rename = size() > owned_ ? sorted_to_storage_.data() : nullptr;
+    layout.rows = owned_;
+    layout.shifts = shifts;
+    walk_for(kind, support, groups).find_neighbours(tree_, space, out, layout);
   }
 
   /// Calls apply(a, b, shift) with storage indices for every owned target a and each neighbour
@@ -111,9 +112,15 @@ private:
     x_.resize(n);
     m_.resize(n);
     h_.resize(n);
-    apply_permutation(sorted_to_storage_, x, x_.data());
-    apply_permutation(sorted_to_storage_, m, m_.data());
-    apply_permutation(sorted_to_storage_, h, h_.data());
+    // One loop for the three arrays (one fork and join, one pass over the map).
+    const std::size_t* from = sorted_to_storage_.data();
+    point<D>* sorted_x = x_.data();
+    double *sorted_m = m_.data(), *sorted_h = h_.data();
+    host_for("ntree::local_tree::gather", n, [=](std::size_t s) {
+      sorted_x[s] = x[from[s]];
+      sorted_m[s] = m[from[s]];
+      sorted_h[s] = h[from[s]];
+    });
   }
 
   // The walk keeps its workspaces between searches with the same options.
@@ -139,7 +146,6 @@ private:
   std::vector<double> m_, h_;
   hashed_tree<D> tree_;
   group_walk<D> walk_;
-  neighbour_lists sorted_lists_;
 };
 
 } // namespace flecsi_lite::topology::ntree

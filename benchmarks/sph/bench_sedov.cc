@@ -1,0 +1,185 @@
+// Benchmark of the SPH time step on the Sedov-Taylor blast in 3D (apps/sedov, its problem and
+// physics keys from sedov_3d.par): the driver's control model runs warm-up steps, then a fixed
+// number of timed steps. Prints the wall and CPU time per step, particle-steps per second, the
+// neighbour counts, each runtime timer's share of the step, and bytes per particle (fields and
+// neighbour lists, besides the local tree).
+//   OMP_NUM_THREADS=2 bench_sedov --per-side 50 --steps 10
+//   mpirun -np 2 bench_sedov --per-side 100
+// benchmarks/sph/run_scaling.sh runs 1 rank x 1 thread, 1 x 2 and 2 x 1 and prints the speed-ups.
+#include "sedov_problem.hh"
+
+#include "specialization/sph/driver.hh"
+
+#include "flecsi_lite/runtime.hh"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <ctime>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace {
+using namespace flecsi_lite;
+namespace sph = flecsph::sph;
+constexpr int D = 3;
+
+struct bench_state : sph::simulation<D> {
+  sedov::problem problem;
+  long warm_up_steps = 1, timed_steps = 10;
+  double start = 0, stop = 0;  ///< MPI_Wtime at the end of the warm-up and of the timed steps
+  std::clock_t cpu_start = 0, cpu_stop = 0;  ///< CPU time of this process (all its threads), same
+  std::uint64_t distributions_before = 0, repeated_searches_before = 0;
+};
+
+/// The keys of the sedov app from `path`, then `overrides`; the benchmark uses the problem and
+/// physics keys (its run control and output are its own).
+runtime::parameters load_parameters(const std::string& path, const std::vector<std::string>& overrides) {
+  runtime::parameter_schema schema;
+  sedov::declare_parameters(schema);
+  sph::declare_physics_parameters(schema);
+  sph::declare_run_parameters(schema, {0.05, 0, 0, "none", "none"});
+  return runtime::parameters::load(schema, path, overrides);
+}
+
+/// Owned particles with r_ab < 2 h_a (the kernel's neighbours, itself included).
+double kernel_neighbours(const sph::neighbourhood<D>& neighbours, sph::accessor<sph::vector<D>, sph::ro, sph::ro> x,
+                         sph::accessor<double, sph::ro> h) {
+  const sph::neighbour_walk<D> walk(neighbours);
+  double count = 0;
+  for (std::size_t a = 0; a < neighbours.size(); ++a) {
+    const double reach = flecsph::physics::kernel_support * h(a);
+    sph::vector<D> r;
+    for (std::size_t j = walk.begin(a); j < walk.end(a); ++j)
+      count += walk.separation(x(a), x(walk.neighbour(j)), j, r) < reach * reach;
+  }
+  return count;
+}
+
+/// The value of option `name`, a whole number of at least 1.
+long count_option(const runtime::options& opts, const std::string& name) {
+  const std::string text = opts.get(name);
+  std::size_t used = 0;
+  long value = 0;
+  try {
+    value = std::stol(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || value < 1)
+    throw runtime::parameter_error("bench_sedov: --" + name + " takes a whole number of at least 1, not '" + text + "'");
+  return value;
+}
+
+double max_over_ranks(double value) {
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, runtime::communicator());
+  return value;
+}
+
+/// Starts the clock after the warm-up steps, stops it and ends the run after the timed ones (the
+/// run ends here, not by max_steps, so that no end-of-run diagnostics fall in the timed steps).
+void benchmark_clock(bench_state& s) {
+  if (s.step == s.warm_up_steps) {
+    flecsi_lite::wait_all();
+    MPI_Barrier(runtime::communicator());
+    timers::clear();
+    s.distributions_before = s.distributions;
+    s.repeated_searches_before = s.repeated_searches;
+    s.start = MPI_Wtime();
+    s.cpu_start = std::clock();
+  } else if (s.step == s.warm_up_steps + s.timed_steps) {
+    flecsi_lite::wait_all();
+    MPI_Barrier(runtime::communicator());
+    s.stop = MPI_Wtime();
+    s.cpu_stop = std::clock();
+    s.finished = true;
+  }
+}
+
+void report(bench_state& s) {
+  using f = sph::fields<D>;
+  auto& p = *s.particles;
+  const double particles = static_cast<double>(p.global_size());
+  const double seconds = max_over_ranks(s.stop - s.start);
+  const double per_step = seconds / static_cast<double>(s.timed_steps);
+  // CPU time shows the work done whatever the load of a shared machine; wall time what it took.
+  const double cpu = max_over_ranks(static_cast<double>(s.cpu_stop - s.cpu_start) / CLOCKS_PER_SEC);
+  const auto rows = timers::summarize();  // before the measurements below add their own timers
+  const double list_entries = reduce<sph::neighbour_total<D>, reduction::sum>(s.neighbours).get();
+  const double in_kernel =
+    reduce<kernel_neighbours, reduction::sum>(s.neighbours, f::position()(p), f::smoothing_length()(p)).get();
+  const sph::memory_use bytes = sph::measure_memory(s);
+  const double field_bytes = max_over_ranks(bytes.fields), list_bytes = max_over_ranks(bytes.neighbour_lists);
+  const double tree_bytes = max_over_ranks(static_cast<double>(p.local().bytes()) /
+                                           static_cast<double>(std::max<std::size_t>(1, p.owned_size())));
+  if (runtime::rank() != 0) return;
+  std::printf("bench_sedov: %lld^3 = %.0f particles, eta %.3g, %d rank(s) x %d thread(s), %ld timed steps after %ld\n",
+              static_cast<long long>(s.problem.per_side), particles, s.physics.eta, runtime::size(),
+              Kokkos::DefaultHostExecutionSpace().concurrency(), s.timed_steps, s.warm_up_steps);
+  std::printf("  wall time per step %.4f s; throughput %.4e particle-steps/s\n", per_step,
+              particles / per_step);
+  std::printf("  CPU time per step (largest over ranks, all threads of a rank) %.4f s: %.2f cores busy per rank\n",
+              cpu / static_cast<double>(s.timed_steps), cpu / seconds);
+  std::printf("  neighbours per particle: %.1f within 2 h (kernel), %.1f in the lists (reach %.3g max(h_a, h_b))\n",
+              in_kernel / particles, list_entries / particles, s.neighbours.reach);
+  std::printf("  bytes per owned particle (largest over ranks): %.0f fields + %.0f neighbour lists = %.0f; "
+              "besides, %.0f in the local tree and search workspaces\n",
+              field_bytes, list_bytes, field_bytes + list_bytes, tree_bytes);
+  std::printf("  during the timed steps: %llu distributions, %llu repeated searches\n",
+              static_cast<unsigned long long>(s.distributions - s.distributions_before),
+              static_cast<unsigned long long>(s.repeated_searches - s.repeated_searches_before));
+  std::printf("  time per step by timer (largest over ranks; 'ntree::distribute <phase>' rows are parts of "
+              "'ntree::distribute'):\n");
+  std::vector<timers::summary_row> sorted(rows.begin(), rows.end());
+  std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.max > b.max; });
+  for (const auto& row : sorted) {
+    const double share = row.max / seconds;
+    if (share < 0.001) continue;
+    std::printf("    %-56s %6ld calls %9.4f s %6.1f%%\n", row.name.c_str(), row.calls,
+                row.max / static_cast<double>(s.timed_steps), 100 * share);
+  }
+  std::printf("throughput: %.4e particle-steps/s\n", particles / per_step);
+}
+} // namespace
+
+int main(int argc, char** argv) {
+  runtime::options options("The SPH step on the 3D Sedov-Taylor blast: time per step, throughput, neighbours, "
+                           "time per task, bytes per particle.");
+  options.value("per-side", "N", "lattice particles per side (N^3 particles)", "50")
+    .value("steps", "S", "timed steps", "10")
+    .value("warm-up", "W", "steps before the timed ones (the first distributes the lattice)", "1")
+    .value("eta", "ETA", "h = eta (m/rho)^(1/3): 1.42 gives 93 neighbours within 2h on the lattice", "1.42")
+    .value("parameters", "FILE", "sedov parameter file whose problem and physics keys are used",
+           FLECSPH_SEDOV_3D_PARAMETERS)
+    .repeated("set", "KEY=VALUE", "override a problem or physics key (after --per-side and --eta)");
+  runtime::runtime rt(argc, argv, options);
+  if (!rt.proceed()) return rt.exit_code();
+  try {
+    bench_state s;
+    s.warm_up_steps = count_option(rt.opts(), "warm-up");
+    s.timed_steps = count_option(rt.opts(), "steps");
+    std::vector<std::string> overrides{"particles_per_side=" + rt.opts().get("per-side"),
+                                       "eta=" + rt.opts().get("eta")};
+    for (const auto& extra : rt.opts().all("set")) overrides.push_back(extra);
+    const auto p = load_parameters(rt.opts().get("parameters"), overrides);
+    s.problem = sedov::problem_from(p);
+    if (s.problem.dimension != D) throw runtime::parameter_error("bench_sedov: dimension must be 3");
+    s.physics = sph::physics_from(p);
+    s.run.end_time = std::numeric_limits<double>::max();
+    s.run.progress_every = 0;
+    s.run.diagnostics_every = 0;
+
+    auto m = sph::make_control_model<bench_state>();
+    m.action("initial_data", "lattice", [](bench_state& state) { sedov::create_lattice(state, state.problem); });
+    m.action("output", "benchmark_clock", benchmark_clock);
+    m.action("finalize", "report", report);
+    const int status = m.execute(s);
+    timers::clear();  // reported above
+    return status;
+  } catch (const runtime::parameter_error& e) {  // exit status 2, as the apps
+    log::error() << e.what();
+    return 2;
+  }
+}

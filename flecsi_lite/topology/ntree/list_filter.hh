@@ -1,0 +1,59 @@
+// The last step of the group walk (seed Algorithm 2, APPLY_SUB_TREE): the entries of a group's
+// interaction list within reach of one target, selected without a branch per entry (whether an
+// entry is a neighbour is data the branch predictor cannot learn), two entries at a time with
+// SSE2 where the compiler targets it.
+#pragma once
+
+#include "flecsi_lite/topology/ntree/space.hh"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace flecsi_lite::topology::ntree {
+
+/// Writes to `hits` the indices j < length, ascending, of the entries with
+///   |x - source_j|^2 < max(reach_squared, source_reach_squared[j])
+/// (source_reach_squared null: < reach_squared), and returns their number. The squared distance
+/// is summed axis by axis in the order of distance_squared, so the selection is bit for bit that
+/// of the exact pair criterion. `source` holds the entries' coordinates axis by axis.
+template<int D>
+std::size_t within_reach(const point<D>& x, const std::array<const double*, D>& source, std::size_t length,
+                         double reach_squared, const double* source_reach_squared, std::uint32_t* hits) {
+  std::size_t count = 0, j = 0;
+#if defined(__SSE2__)
+  const __m128d own_reach = _mm_set1_pd(reach_squared);
+  for (; j + 2 <= length; j += 2) {
+    __m128d r2 = _mm_setzero_pd();
+    for (int k = 0; k < D; ++k) {
+      const __m128d d = _mm_sub_pd(_mm_set1_pd(x[k]), _mm_loadu_pd(source[k] + j));
+      r2 = _mm_add_pd(r2, _mm_mul_pd(d, d));
+    }
+    const __m128d limit =
+      source_reach_squared ? _mm_max_pd(own_reach, _mm_loadu_pd(source_reach_squared + j)) : own_reach;
+    const int inside = _mm_movemask_pd(_mm_cmplt_pd(r2, limit));
+    hits[count] = static_cast<std::uint32_t>(j);
+    count += inside & 1;
+    hits[count] = static_cast<std::uint32_t>(j + 1);
+    count += inside >> 1;
+  }
+#endif
+  for (; j < length; ++j) {
+    double r2 = 0;
+    for (int k = 0; k < D; ++k) {
+      const double d = x[k] - source[k][j];
+      r2 += d * d;
+    }
+    const double limit = source_reach_squared ? std::max(reach_squared, source_reach_squared[j]) : reach_squared;
+    hits[count] = static_cast<std::uint32_t>(j);
+    count += r2 < limit;
+  }
+  return count;
+}
+
+} // namespace flecsi_lite::topology::ntree
