@@ -1,4 +1,6 @@
-// The execution model: execute<task>, reduce<task, op>, futures, forall.
+// The execution model: execute<task>, reduce<task, op>, futures, reduction operations, forall.
 #pragma once
 #include "flecsi_lite/execution/execute.hh"
 #include "flecsi_lite/execution/forall.hh"
+#include "flecsi_lite/execution/future.hh"
+#include "flecsi_lite/execution/reduction.hh"

@@ -3,7 +3,7 @@
 #include "specialization/analytic/riemann_exact.hh"
 #include "specialization/analytic/sedov_taylor.hh"
 
-#include "flecsi_lite/runtime/options.hh"
+#include "flecsi_lite/runtime.hh"
 
 #include <cmath>
 #include <fstream>

@@ -6,8 +6,8 @@
 #include "specialization/analytic/sedov_taylor.hh"
 #include "specialization/sph/driver.hh"
 
-#include "flecsi_lite/io/particle_partition.hh"
-#include "flecsi_lite/runtime/parameters.hh"
+#include "flecsi_lite/io.hh"
+#include "flecsi_lite/runtime.hh"
 
 #include <array>
 #include <cmath>
@@ -43,21 +43,12 @@ void set_periodic_box(sph::simulation<D>& s, const problem& problem) {
 /// (up to rounding) is deposited, spread by the kernel. Collective.
 template<int D>
 void create_lattice(sph::simulation<D>& s, const problem& problem) {
-  using f = sph::fields<D>;
   std::uint64_t total = 1;
   for (int k = 0; k < D; ++k) total *= static_cast<std::uint64_t>(problem.per_side);
   const auto block = flecsi_lite::io::block_slice(total, flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
   set_periodic_box(s, problem);
   sph::create_particles(s, block.count);
-  auto& p = *s.particles;
-  auto x = flecsi_lite::host_view(f::position()(p));
-  auto id = flecsi_lite::host_view(f::id()(p));
-  auto m = flecsi_lite::host_view(f::mass()(p));
-  auto h = flecsi_lite::host_view(f::smoothing_length()(p));
-  auto kind = flecsi_lite::host_view(f::kind(p));
-  auto rho = flecsi_lite::host_view(f::density(p));
-  auto u = flecsi_lite::host_view(f::internal_energy(p));
-  auto omega = flecsi_lite::host_view(f::omega(p));
+  const sph::initial_views<D> set(*s.particles);
   const double spacing = problem.side / double(problem.per_side);
   const double mass = problem.rho0 * std::pow(spacing, D);
   const double smoothing = s.physics.eta * spacing;
@@ -81,14 +72,13 @@ void create_lattice(sph::simulation<D>& s, const problem& problem) {
   for (std::uint64_t i = 0; i < total; ++i) weight_sum += weight(site(i));
   for (std::size_t i = 0; i < block.count; ++i) {
     const std::uint64_t index = block.offset + i;
-    x(i) = site(index);
-    id(i) = index;
-    m(i) = mass;
-    h(i) = smoothing;
-    kind(i) = sph::particle_kind::fluid;
-    rho(i) = problem.rho0;
-    omega(i) = 1.0;
-    u(i) = u_background + problem.energy * weight(x(i)) / (mass * weight_sum);
+    set.x(i) = site(index);
+    set.id(i) = index;
+    set.m(i) = mass;
+    set.h(i) = smoothing;
+    set.kind(i) = sph::particle_kind::fluid;
+    set.rho(i) = problem.rho0;
+    set.u(i) = u_background + problem.energy * weight(set.x(i)) / (mass * weight_sum);
   }
 }
 

@@ -1,7 +1,7 @@
 // The Sod shock tube's parameters, particle layout and initial particles (sod_problem.hh).
 #include "sod_problem.hh"
 
-#include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/runtime.hh"
 
 #include <algorithm>
 

@@ -6,9 +6,9 @@
 #include "specialization/analytic/riemann_exact.hh"
 #include "specialization/sph/driver.hh"
 
-#include "flecsi_lite/io/particle_partition.hh"
-#include "flecsi_lite/runtime/parameters.hh"
-#include "flecsi_lite/util/exact_sum.hh"
+#include "flecsi_lite/io.hh"
+#include "flecsi_lite/runtime.hh"
+#include "flecsi_lite/util.hh"
 
 #include <array>
 #include <cmath>
@@ -104,33 +104,23 @@ void set_tube_domain(sph::simulation<D>& s, const problem& problem) {
 /// domain (set_tube_domain). Collective.
 template<int D>
 void create_tube(sph::simulation<D>& s, const problem& problem) {
-  using f = sph::fields<D>;
   const tube_layout layout = layout_of(problem, s.physics, D);
   set_tube_domain(s, problem);
   const auto block = flecsi_lite::io::block_slice(static_cast<std::uint64_t>(layout.total()),
                                                   flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
   sph::create_particles(s, block.count);
-  auto& p = *s.particles;
-  auto x = flecsi_lite::host_view(f::position()(p));
-  auto id = flecsi_lite::host_view(f::id()(p));
-  auto m = flecsi_lite::host_view(f::mass()(p));
-  auto h = flecsi_lite::host_view(f::smoothing_length()(p));
-  auto kind = flecsi_lite::host_view(f::kind(p));
-  auto rho = flecsi_lite::host_view(f::density(p));
-  auto u = flecsi_lite::host_view(f::internal_energy(p));
-  auto omega = flecsi_lite::host_view(f::omega(p));
+  const sph::initial_views<D> set(*s.particles);
   const flecsph::physics::ideal_gas gas = s.physics.eos.ideal;
   for (std::size_t i = 0; i < block.count; ++i) {
     const std::int64_t index = static_cast<std::int64_t>(block.offset + i);
     const tube_particle particle = particle_of(problem, s.physics, layout, index);
-    for (int k = 0; k < D; ++k) x(i)[k] = particle.x[k];
-    id(i) = static_cast<std::uint64_t>(index);
-    m(i) = layout.mass;
-    h(i) = particle.h;
-    kind(i) = particle.kind;
-    rho(i) = particle.rho;
-    u(i) = gas.internal_energy(particle.rho, particle.P);
-    omega(i) = 1.0;
+    for (int k = 0; k < D; ++k) set.x(i)[k] = particle.x[k];
+    set.id(i) = static_cast<std::uint64_t>(index);
+    set.m(i) = layout.mass;
+    set.h(i) = particle.h;
+    set.kind(i) = particle.kind;
+    set.rho(i) = particle.rho;
+    set.u(i) = gas.internal_energy(particle.rho, particle.P);
   }
   // velocity, acceleration, du/dt and the boundary accumulators start at zero.
 }

@@ -4,9 +4,8 @@
 //   h5part_to_ascii run.h5part > last.dat              # last step, default columns
 //   h5part_to_ascii --step 12 --columns x,rho,P run.h5part --output step12.dat
 //   h5part_to_ascii --list run.h5part                  # steps, times and datasets
-#include "flecsi_lite/io/ascii_columns.hh"
-#include "flecsi_lite/io/h5part_reader.hh"
-#include "flecsi_lite/runtime/options.hh"
+#include "flecsi_lite/io.hh"
+#include "flecsi_lite/runtime.hh"
 
 #include <mpi.h>
 

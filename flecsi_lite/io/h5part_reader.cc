@@ -2,11 +2,11 @@
 #include "flecsi_lite/io/h5part_reader.hh"
 
 #include "flecsi_lite/io/collective_agreement.hh"
-#include "flecsi_lite/io/h5part_layout.hh"
-#include "flecsi_lite/io/h5part_steps.hh"
-#include "flecsi_lite/io/hdf5_attributes.hh"
-#include "flecsi_lite/io/hdf5_errors.hh"
-#include "flecsi_lite/io/hdf5_parallel.hh"
+#include "flecsi_lite/io/hdf5/h5part_layout.hh"
+#include "flecsi_lite/io/hdf5/h5part_steps.hh"
+#include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
+#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
+#include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
 #include "flecsi_lite/util/edit_distance.hh"
 
 #include <algorithm>

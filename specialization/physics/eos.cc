@@ -1,7 +1,7 @@
 // Names of the equations of state for parameter files, with "did you mean" errors.
 #include "specialization/physics/eos.hh"
 
-#include "flecsi_lite/util/edit_distance.hh"
+#include "flecsi_lite/util.hh"
 
 #include <array>
 #include <stdexcept>

@@ -1,7 +1,7 @@
 // Kernel names for parameter files, with "did you mean" errors for misspelled names.
 #include "specialization/physics/kernels.hh"
 
-#include "flecsi_lite/util/edit_distance.hh"
+#include "flecsi_lite/util.hh"
 
 #include <stdexcept>
 #include <string>

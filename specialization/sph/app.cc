@@ -1,7 +1,7 @@
 // main() of the SPH apps (app.hh).
 #include "specialization/sph/app.hh"
 
-#include "flecsi_lite/io/io_error.hh"
+#include "flecsi_lite/io.hh"
 
 #include <exception>
 #include <iostream>

@@ -15,8 +15,7 @@
 #include "specialization/sph/restart.hh"
 
 #include "flecsi_lite/control.hh"
-#include "flecsi_lite/io/h5part_reader.hh"
-#include "flecsi_lite/io/h5part_writer.hh"
+#include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"
 
 #include <functional>

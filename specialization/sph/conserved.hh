@@ -5,7 +5,7 @@
 
 #include "specialization/sph/density.hh"
 
-#include "flecsi_lite/util/exact_sum.hh"
+#include "flecsi_lite/util.hh"
 
 #include <array>
 #include <vector>

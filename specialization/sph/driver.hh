@@ -15,6 +15,7 @@
 #include "specialization/sph/density.hh"
 #include "specialization/sph/equation_of_state.hh"
 #include "specialization/sph/forces.hh"
+#include "specialization/sph/initial_fields.hh"
 #include "specialization/sph/integrator.hh"
 #include "specialization/sph/redistribution.hh"
 #include "specialization/sph/simulation.hh"
@@ -33,16 +34,6 @@
 #include <utility>
 
 namespace flecsph::sph {
-
-/// Creates the particles of `s` with `local_count` owned particles here (fields zero): the tree's
-/// reach is the kernel support plus the search margin, its ghosts reach the skin beyond. Collective.
-template<int D>
-void create_particles(simulation<D>& s, std::size_t local_count) {
-  s.tree_settings.support = physics::kernel_support * (1.0 + s.physics.search_margin);
-  s.tree_settings.ghost_reach_factor = 1.0 + s.physics.distribution_skin;
-  s.neighbours = {};
-  s.particles = std::make_unique<particle_tree<D>>(s.tree_settings, local_count);
-}
 
 /// Total length of this rank's neighbour lists (for the mean neighbour count).
 template<int D>

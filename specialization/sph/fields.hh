@@ -3,7 +3,7 @@
 #pragma once
 
 #include "flecsi_lite/data.hh"
-#include "flecsi_lite/topology/ntree/ntree.hh"
+#include "flecsi_lite/topology/ntree.hh"
 
 #include <array>
 #include <cstdint>

@@ -13,7 +13,7 @@
 
 #include "specialization/sph/density.hh"
 
-#include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree.hh"
 
 #include <cmath>
 

@@ -6,9 +6,8 @@
 
 #include "specialization/sph/fields.hh"
 
-#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
-#include "flecsi_lite/util/kokkos.hh"
-#include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree.hh"
+#include "flecsi_lite/util.hh"
 
 #include <array>
 #include <cstddef>

@@ -14,8 +14,7 @@
 
 #include "specialization/sph/driver.hh"
 
-#include "flecsi_lite/io/collective_agreement.hh"
-#include "flecsi_lite/io/h5part_reader.hh"
+#include "flecsi_lite/io.hh"
 
 #include <cmath>
 #include <cstdint>
@@ -69,7 +68,6 @@ void check_values(const std::vector<double>& values, const std::string& where, c
 /// Returns the step index read.
 template<int D>
 std::int64_t read_particles(simulation<D>& s, const flecsi_lite::io::h5part_reader& in, std::int64_t step = -1) {
-  using f = fields<D>;
   if (step < 0) step = in.last_step();
   const std::string where = describe_input_step(in, step);
   const std::uint64_t total = in.particle_count(step);
@@ -109,28 +107,18 @@ std::int64_t read_particles(simulation<D>& s, const flecsi_lite::io::h5part_read
   });
 
   create_particles(s, block.count);
-  auto& p = *s.particles;
-  auto position = flecsi_lite::host_view(f::position()(p));
-  auto velocity = flecsi_lite::host_view(f::velocity(p));
-  auto id = flecsi_lite::host_view(f::id()(p));
-  auto mass = flecsi_lite::host_view(f::mass()(p));
-  auto smoothing = flecsi_lite::host_view(f::smoothing_length()(p));
-  auto kind = flecsi_lite::host_view(f::kind(p));
-  auto density = flecsi_lite::host_view(f::density(p));
-  auto energy = flecsi_lite::host_view(f::internal_energy(p));
-  auto omega = flecsi_lite::host_view(f::omega(p));
+  const initial_views<D> set(*s.particles);
   for (std::size_t i = 0; i < block.count; ++i) {
     for (int k = 0; k < D; ++k) {
-      position(i)[k] = x[k][i];
-      velocity(i)[k] = v[k].empty() ? 0.0 : v[k][i];
+      set.x(i)[k] = x[k][i];
+      set.v(i)[k] = v[k].empty() ? 0.0 : v[k][i];
     }
-    id(i) = has_id ? ids[i] : block.offset + i;
-    mass(i) = m[i];
-    smoothing(i) = h[i];
-    kind(i) = has_kind && kinds[i] == 1 ? particle_kind::wall : particle_kind::fluid;
-    density(i) = has_rho ? rho[i] : 0.0;
-    energy(i) = u[i];
-    omega(i) = 1.0;
+    set.id(i) = has_id ? ids[i] : block.offset + i;
+    set.m(i) = m[i];
+    set.h(i) = h[i];
+    set.kind(i) = has_kind && kinds[i] == 1 ? particle_kind::wall : particle_kind::fluid;
+    set.rho(i) = has_rho ? rho[i] : 0.0;
+    set.u(i) = u[i];
   }
   return step;
 }

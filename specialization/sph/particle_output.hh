@@ -5,7 +5,7 @@
 #include "specialization/sph/simulation.hh"
 
 #include "flecsi_lite/execution.hh"
-#include "flecsi_lite/io/h5part_writer.hh"
+#include "flecsi_lite/io.hh"
 
 #include <cstdint>
 #include <string>

@@ -13,7 +13,7 @@
 #include "specialization/sph/particle_input.hh"
 #include "specialization/sph/particle_output.hh"
 
-#include "flecsi_lite/io/checkpoint.hh"
+#include "flecsi_lite/io.hh"
 
 #include <string>
 #include <vector>

@@ -6,7 +6,7 @@
 #include "specialization/physics/kernels.hh"
 #include "specialization/physics/viscosity.hh"
 
-#include "flecsi_lite/runtime/parameters.hh"
+#include "flecsi_lite/runtime.hh"
 
 #include <string>
 

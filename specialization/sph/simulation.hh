@@ -7,8 +7,8 @@
 #include "specialization/sph/neighbourhood.hh"
 #include "specialization/sph/settings.hh"
 
-#include "flecsi_lite/execution/future.hh"
-#include "flecsi_lite/topology/ntree/ntree.hh"
+#include "flecsi_lite/execution.hh"
+#include "flecsi_lite/topology/ntree.hh"
 
 #include <chrono>
 #include <memory>

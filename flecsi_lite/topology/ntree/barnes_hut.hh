@@ -4,7 +4,7 @@
 #pragma once
 
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/search_dispatch.hh"
+#include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
 #include <cassert>

@@ -4,12 +4,12 @@
 #pragma once
 
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/list_filter.hh"
-#include "flecsi_lite/topology/ntree/neighbour_list_builder.hh"
+#include "flecsi_lite/topology/ntree/detail/list_filter.hh"
+#include "flecsi_lite/topology/ntree/detail/neighbour_list_builder.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 #include "flecsi_lite/topology/ntree/radius_search.hh"
-#include "flecsi_lite/topology/ntree/search_dispatch.hh"
+#include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
 
 #include <algorithm>
 #include <array>
@@ -253,25 +253,8 @@ private:
     };
 
     std::size_t length = 0;
-    walk_entry stack[walk_stack_size<D>];
-    int top = 0;
-    const std::uint32_t root_pass = reachable(nodes[0], Periodic ? allowed : 1u);
-    if (root_pass != 0) stack[top++] = walk_entry{0, root_pass};
-    while (top > 0) {
-      const walk_entry entry = stack[--top];
-      const search_node<D>& node = nodes[entry.node];
-      if (!node.is_leaf()) {
-        // Last child first, so that children are popped in key (= index) order.
-        for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) {
-          // Pushed unconditionally, kept only if within reach: no branch to mispredict.
-          const std::uint32_t pass = reachable(nodes[c], entry.shifts);
-          assert(top < walk_stack_size<D>);
-          stack[top] = walk_entry{c, pass};
-          top += pass != 0;
-        }
-        continue;
-      }
-      const std::size_t images = Periodic ? __builtin_popcount(entry.shifts) : 1;
+    const auto leaf = [&](const search_node<D>& node, std::uint32_t node_shifts) {
+      const std::size_t images = Periodic ? __builtin_popcount(node_shifts) : 1;
       work.reserve(length + images * (node.end - node.begin));
       std::uint32_t* __restrict index = work.index.data();
       shift_code* __restrict code = work.shift.data();
@@ -290,7 +273,7 @@ private:
         const double radius_b = support * h[b];
         const double reach_b = interaction_radius<Kind>(1.0, group_radius, radius_b);
         if constexpr (Periodic) {
-          for (std::uint32_t rest = entry.shifts; rest != 0; rest &= rest - 1) {
+          for (std::uint32_t rest = node_shifts; rest != 0; rest &= rest - 1) {
             const int c = __builtin_ctz(rest);
             point<D> image;
             for (int k = 0; k < D; ++k) image[k] = positions[b][k] + shifts[c][k];
@@ -302,7 +285,8 @@ private:
                within_radius(distance_squared<D>(targets, positions[b]), reach_b));
         }
       }
-    }
+    };
+    walk_reachable_leaves<D>(nodes, Periodic ? allowed : 1u, reachable, leaf);
     work.length = length;
     work.entries += length;
   }

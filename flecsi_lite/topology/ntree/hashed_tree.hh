@@ -3,11 +3,11 @@
 // bottom-up pass for mass, centre of mass, tight bounding box, largest h and quadrupole.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/host_parallel.hh"
-#include "flecsi_lite/topology/ntree/keys.hh"
+#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
+#include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/multipole.hh"
-#include "flecsi_lite/topology/ntree/node_table.hh"
-#include "flecsi_lite/topology/ntree/search_node.hh"
+#include "flecsi_lite/topology/ntree/detail/node_table.hh"
+#include "flecsi_lite/topology/ntree/detail/search_node.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
 #include <algorithm>

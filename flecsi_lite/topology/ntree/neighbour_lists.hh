@@ -3,7 +3,7 @@
 // their layouts (image shift codes separate or packed into the entries, renamed rows).
 #pragma once
 
-#include "flecsi_lite/topology/ntree/host_parallel.hh"
+#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 
 #include <algorithm>

@@ -10,7 +10,7 @@
 #include "flecsi_lite/topology/ntree/distributed/distribution_stats.hh"
 #include "flecsi_lite/topology/ntree/distributed/local_tree.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/keys.hh"
+#include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 #include "flecsi_lite/topology/ntree/space.hh"

@@ -4,10 +4,10 @@
 #pragma once
 
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/neighbour_list_builder.hh"
+#include "flecsi_lite/topology/ntree/detail/neighbour_list_builder.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
-#include "flecsi_lite/topology/ntree/search_dispatch.hh"
+#include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
 
 #include <cassert>
 #include <cstddef>
@@ -33,27 +33,11 @@ void walk_target(const hashed_tree<D>& tree,
     return reachable_shifts<Kind, Periodic>(node, x, target_radius, support, shifts, candidates);
   };
 
-  walk_entry stack[walk_stack_size<D>];
-  int top = 0;
-  const std::uint32_t root_pass = reachable(nodes[0], Periodic ? allowed : 1u);
-  if (root_pass != 0) stack[top++] = walk_entry{0, root_pass};
-  while (top > 0) {
-    const walk_entry entry = stack[--top];
-    const search_node<D>& node = nodes[entry.node];
-    if (!node.is_leaf()) {
-      // Last child first, so that children are popped in key (= index) order.
-      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) {
-        const std::uint32_t pass = reachable(nodes[c], entry.shifts);
-        if (pass == 0) continue;
-        assert(top < walk_stack_size<D>);
-        stack[top++] = walk_entry{c, pass};
-      }
-      continue;
-    }
+  const auto leaf = [&](const search_node<D>& node, std::uint32_t images) {
     for (std::uint32_t b = node.begin; b < node.end; ++b) {
       const double radius = interaction_radius<Kind>(support, h_target, h[b]);
       if constexpr (Periodic) {
-        for (std::uint32_t rest = entry.shifts; rest != 0; rest &= rest - 1) {
+        for (std::uint32_t rest = images; rest != 0; rest &= rest - 1) {
           const int code = __builtin_ctz(rest);
           point<D> image;
           for (int k = 0; k < D; ++k) image[k] = positions[b][k] + shifts[code][k];
@@ -65,7 +49,8 @@ void walk_target(const hashed_tree<D>& tree,
           visit(b, zero_shift<D>);
       }
     }
-  }
+  };
+  walk_reachable_leaves<D>(nodes, Periodic ? allowed : 1u, reachable, leaf);
 }
 
 /// Ball query: calls visit(b, code) for every source image within `radius` of the point `x`

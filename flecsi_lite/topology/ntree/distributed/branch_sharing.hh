@@ -7,9 +7,9 @@
 
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/host_parallel.hh"
+#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
-#include "flecsi_lite/topology/ntree/search_dispatch.hh"
+#include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
 
 #include <mpi.h>
 

@@ -7,9 +7,9 @@
 #include "flecsi_lite/topology/ntree/distributed/sorted_runs.hh"
 #include "flecsi_lite/topology/ntree/group_walk.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/host_parallel.hh"
+#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
-#include "flecsi_lite/topology/ntree/ordering.hh"
+#include "flecsi_lite/topology/ntree/sfc/ordering.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 
 #include <cstddef>

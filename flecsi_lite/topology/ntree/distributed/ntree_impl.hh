@@ -9,7 +9,7 @@
 #include "flecsi_lite/topology/ntree/distributed/particle_exchange.hh"
 #include "flecsi_lite/topology/ntree/distributed/sample_sort.hh"
 #include "flecsi_lite/topology/ntree/distributed/sorted_runs.hh"
-#include "flecsi_lite/topology/ntree/ordering.hh"
+#include "flecsi_lite/topology/ntree/sfc/ordering.hh"
 
 #include <mpi.h>
 

@@ -3,7 +3,7 @@
 // (particle count or work) into equal parts (Shi & Schaeffer 1992; FleCSPH, seed sec. 2.3.3).
 #pragma once
 
-#include "flecsi_lite/topology/ntree/keys.hh"
+#include "flecsi_lite/topology/ntree/sfc/keys.hh"
 
 #include <mpi.h>
 

@@ -3,7 +3,7 @@
 // all-to-all each source rank's block is sorted, and so are owned and ghost blocks.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/keys.hh"
+#include "flecsi_lite/topology/ntree/sfc/keys.hh"
 
 #include <algorithm>
 #include <cstddef>

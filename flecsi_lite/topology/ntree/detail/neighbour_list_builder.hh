@@ -1,0 +1,208 @@
+// Parallel assembly of neighbour lists (neighbour_lists.hh) by the searches: per-thread chunks of
+// consecutive rows written in place into the lists' own arrays, then moved down after the scan of
+// the row counts.
+#pragma once
+
+#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
+#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/periodic.hh"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace flecsi_lite::topology::ntree {
+
+/// Parallel assembly of neighbour_lists: the targets are cut into chunks of consecutive rows,
+/// each worked on by one thread that appends its entries, row after row, and writes the counts of
+/// its rows; then the offsets are scanned and each chunk's entries moved to their place.
+///
+/// Each chunk writes into its own REGION of the lists' arrays, as long as the chunk's entries of
+/// the previous search and a little more; the regions follow each other in chunk order, so after
+/// the scan the entries only move down, chunk after chunk, in place. The lists are thus held once,
+/// and a steady state allocates nothing (fresh memory costs page faults, and its release costs
+/// every thread a TLB flush). A chunk that outgrows its region continues in a buffer of its own,
+/// and that search gathers all chunks into new arrays.
+class neighbour_list_builder {
+public:
+  /// How the entries are written: plain indices, with separate shift codes, or packed.
+  enum class entries { plain, separate_shifts, packed };
+
+  class chunk {
+  public:
+    /// Appends `count` entries to row `row` (rows come in ascending order): entry i is
+    /// neighbour(i), renamed through `rename` when it is set, under shift code shift(i).
+    template<class Neighbour, class Shift>
+    void append(std::size_t row, std::size_t count, const Neighbour& neighbour, const Shift& shift,
+                const std::size_t* rename, entries kind) {
+      if (row != row_) start_row(row);
+      if (size_ + count > capacity_) move_to_own_buffer(size_ + count, kind);
+      // Local pointers: the stores below cannot then change the chunk's own members.
+      std::uint32_t* const out = neighbours_ + size_;
+      const auto index = [&](std::size_t i) {
+        return static_cast<std::uint32_t>(rename ? rename[neighbour(i)] : neighbour(i));
+      };
+      if (kind == entries::packed) {
+        for (std::size_t i = 0; i < count; ++i) out[i] = packed_entry(index(i), shift(i));
+      } else {
+        for (std::size_t i = 0; i < count; ++i) out[i] = index(i);
+      }
+      if (kind == entries::separate_shifts) {
+        shift_code* const codes = shifts_ + size_;
+        for (std::size_t i = 0; i < count; ++i) codes[i] = shift(i);
+      }
+      size_ += count;
+    }
+
+    /// Appends the one entry b (shift code `code`) to row `row`.
+    void append(std::size_t row, std::uint32_t b, shift_code code, entries kind) {
+      append(row, 1, [b](std::size_t) { return b; }, [code](std::size_t) { return code; }, nullptr, kind);
+    }
+
+  private:
+    friend class neighbour_list_builder;
+    static constexpr std::size_t no_row = static_cast<std::size_t>(-1);
+
+    void start(std::size_t* counts, std::uint32_t* region, shift_code* region_shifts, std::size_t capacity) {
+      counts_ = counts;
+      neighbours_ = region;
+      shifts_ = region_shifts;
+      capacity_ = capacity;
+      size_ = 0;
+      row_ = no_row;
+      own_neighbours_.reset();
+      own_shifts_.reset();
+    }
+    // The count of the row just finished goes to counts_ (one write per row, not per entry).
+    void start_row(std::size_t row) {
+      if (row_ == no_row) first_row_ = row;
+      else counts_[row_] = size_ - row_begin_;
+      row_ = row;
+      row_begin_ = size_;
+    }
+    void close() {
+      if (row_ != no_row) counts_[row_] = size_ - row_begin_;
+    }
+    bool in_region() const { return !own_neighbours_; }
+    void move_to_own_buffer(std::size_t needed, entries kind) {
+      const std::size_t capacity = std::max({std::size_t{1024}, 2 * capacity_, needed});
+      // Uninitialized: every used entry is written by append.
+      std::unique_ptr<std::uint32_t[]> neighbours(new std::uint32_t[capacity]);
+      std::unique_ptr<shift_code[]> shifts(kind == entries::separate_shifts ? new shift_code[capacity] : nullptr);
+      if (size_ > 0) {
+        std::memcpy(neighbours.get(), neighbours_, size_ * sizeof(std::uint32_t));
+        if (shifts) std::memcpy(shifts.get(), shifts_, size_ * sizeof(shift_code));
+      }
+      own_neighbours_ = std::move(neighbours);
+      own_shifts_ = std::move(shifts);
+      neighbours_ = own_neighbours_.get();
+      shifts_ = own_shifts_.get();
+      capacity_ = capacity;
+    }
+
+    std::size_t* counts_ = nullptr;  // out.offsets, which hold the counts until the scan
+    std::size_t first_row_ = 0;      // row of the chunk's first entry
+    std::size_t row_ = no_row, row_begin_ = 0;
+    std::size_t size_ = 0, capacity_ = 0;
+    std::uint32_t* neighbours_ = nullptr;  // its region of the lists, or its own buffer
+    shift_code* shifts_ = nullptr;
+    std::unique_ptr<std::uint32_t[]> own_neighbours_;
+    std::unique_ptr<shift_code[]> own_shifts_;
+  };
+
+  /// The entries for `layout` on a domain that is periodic or not, for `particles` particles
+  /// (packed entries hold at most 2^27).
+  static entries entries_for(const list_layout& layout, bool periodic, std::size_t particles) {
+    if (layout.shifts == shift_storage::packed) {
+      if (particles > packed_index_mask + std::size_t{1})
+        throw std::length_error("ntree: packed neighbour lists hold at most 2^27 particles");
+      return entries::packed;
+    }
+    return periodic ? entries::separate_shifts : entries::plain;
+  }
+
+  /// Prepares `out` for `rows` rows (all counts zero) and `chunk_count` chunks, each given a
+  /// region of out's arrays.
+  void start(std::size_t rows, std::size_t chunk_count, neighbour_lists& out, entries kind) {
+    out.offsets.assign(rows + 1, 0);
+    if (chunks_.size() < chunk_count) chunks_.resize(chunk_count);
+    if (last_sizes_.size() < chunk_count) last_sizes_.resize(chunk_count, 0);
+    chunk_count_ = chunk_count;
+    std::vector<std::size_t> region(chunk_count + 1, 0);
+    for (std::size_t c = 0; c < chunk_count; ++c)
+      region[c + 1] = region[c] + last_sizes_[c] + last_sizes_[c] / 16 + (last_sizes_[c] ? 64 : 0);
+    const bool with_shifts = kind == entries::separate_shifts;
+    fit(out.neighbours, region[chunk_count]);
+    fit(out.shifts, with_shifts ? region[chunk_count] : 0);
+    for (std::size_t c = 0; c < chunk_count; ++c)
+      chunks_[c].start(out.offsets.data(), out.neighbours.data() + region[c],
+                       with_shifts ? out.shifts.data() + region[c] : nullptr, region[c + 1] - region[c]);
+  }
+
+  chunk& operator[](std::size_t c) { return chunks_[c]; }
+
+  /// Turns the counts in out.offsets into offsets and moves the chunks' entries to their place.
+  void finish(neighbour_lists& out, entries kind) {
+    bool all_in_regions = true;
+    for (std::size_t c = 0; c < chunk_count_; ++c) {
+      chunks_[c].close();
+      last_sizes_[c] = chunks_[c].size_;
+      all_in_regions = all_in_regions && chunks_[c].in_region();
+    }
+    const std::size_t rows = out.offsets.size() - 1;
+    const std::size_t total = host_exclusive_scan("ntree::neighbour_lists::offsets",
+                                                  out.offsets.data(), rows + 1);
+    const bool with_shifts = kind == entries::separate_shifts;
+    if (all_in_regions) {
+      // Chunk c's place starts at the sum of the sizes of the chunks before it, at most where
+      // its region starts: moved in chunk order, no entry is overwritten before it moved.
+      for (std::size_t c = 0; c < chunk_count_; ++c) {
+        const chunk& part = chunks_[c];
+        if (part.size_ == 0) continue;
+        const std::size_t at = out.offsets[part.first_row_];
+        std::memmove(out.neighbours.data() + at, part.neighbours_, part.size_ * sizeof(std::uint32_t));
+        if (with_shifts) std::memmove(out.shifts.data() + at, part.shifts_, part.size_ * sizeof(shift_code));
+      }
+      out.neighbours.resize(total);
+      out.shifts.resize(with_shifts ? total : 0);
+    } else {
+      neighbour_lists gathered;
+      gathered.neighbours.resize(total);
+      gathered.shifts.resize(with_shifts ? total : 0);
+      host_for("ntree::neighbour_lists::gather", chunk_count_, [&](std::size_t c) {
+        const chunk& part = chunks_[c];
+        if (part.size_ == 0) return;
+        const std::size_t at = out.offsets[part.first_row_];
+        std::memcpy(gathered.neighbours.data() + at, part.neighbours_, part.size_ * sizeof(std::uint32_t));
+        if (with_shifts)
+          std::memcpy(gathered.shifts.data() + at, part.shifts_, part.size_ * sizeof(shift_code));
+      });
+      out.neighbours.swap(gathered.neighbours);
+      out.shifts.swap(gathered.shifts);
+    }
+    for (std::size_t c = 0; c < chunk_count_; ++c) chunks_[c].start(nullptr, nullptr, nullptr, 0);
+  }
+
+private:
+  // Room for `size` values: the arrays keep their allocation unless it is too small or more
+  // than 1/8 too large (std::vector::resize alone would double the capacity).
+  template<class T>
+  static void fit(std::vector<T>& values, std::size_t size) {
+    if (values.capacity() < size || values.capacity() > size + size / 8) {
+      std::vector<T> fitted;
+      fitted.reserve(size);
+      values.swap(fitted);
+    }
+    values.resize(size);
+  }
+
+  std::vector<chunk> chunks_;
+  std::vector<std::size_t> last_sizes_;
+  std::size_t chunk_count_ = 0;
+};
+
+} // namespace flecsi_lite::topology::ntree
