@@ -60,3 +60,21 @@ function(flecsph_add_mpi_test name)
       ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1" TIMEOUT 900)
   endforeach()
 endfunction()
+
+# flecsph_add_tutorial(<chapter> TARGET <target> [RANKS n] [ARGS args...]): test
+# tutorial.<chapter> runs the chapter's program on n ranks (1 by default), one thread each, in
+# its own folder; the program checks its own result.
+function(flecsph_add_tutorial chapter)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "TARGET;RANKS" "ARGS")
+  if(NOT arg_RANKS)
+    set(arg_RANKS 1)
+  endif()
+  set(_directory ${CMAKE_CURRENT_BINARY_DIR}/${chapter})
+  file(MAKE_DIRECTORY ${_directory})
+  add_test(NAME tutorial.${chapter}
+    COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${arg_RANKS} ${FLECSPH_MPIEXEC_FLAGS}
+            $<TARGET_FILE:${arg_TARGET}> ${arg_ARGS} --no-timers
+    WORKING_DIRECTORY ${_directory})
+  set_tests_properties(tutorial.${chapter} PROPERTIES PROCESSORS ${arg_RANKS} TIMEOUT 300
+    ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1")
+endfunction()
