@@ -60,3 +60,122 @@ function(flecsph_add_mpi_test name)
       ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1" TIMEOUT 900)
   endforeach()
 endfunction()
+
+# The command line prefix of an MPI run (the rank count follows) and the options that quieten an
+# SPH app in tests.
+set(FLECSPH_MPIEXEC_RUN ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG})
+set(FLECSPH_QUIET_APP --set progress_every=0 --set diagnostics_every=0 --no-timers)
+
+# flecsph_add_restart_test(<name> APP <target> PARAMETERS <file> CHECKPOINT_EVERY <n> [ARGS ...]):
+# a run on 2 ranks with checkpoints every CHECKPOINT_EVERY steps (app.<name>.restart.write), the
+# same run restarted on 1 rank from its last checkpoint (.continue), and a bitwise comparison of
+# their final steps (.compare, with compare_h5part from tests/validation).
+function(flecsph_add_restart_test name)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "APP;PARAMETERS;CHECKPOINT_EVERY" "ARGS")
+  set(_run ${FLECSPH_MPIEXEC_RUN})
+  set(_common $<TARGET_FILE:${arg_APP}> ${arg_PARAMETERS} ${arg_ARGS} ${FLECSPH_QUIET_APP}
+              --set checkpoint_file=${name}_checkpoint.h5part --set checkpoint_every=${arg_CHECKPOINT_EVERY})
+  add_test(NAME app.${name}.restart.write
+    COMMAND ${_run} 2 ${FLECSPH_MPIEXEC_FLAGS} ${_common} --set output_file=${name}_full.h5part)
+  add_test(NAME app.${name}.restart.continue
+    COMMAND ${_run} 1 ${FLECSPH_MPIEXEC_FLAGS} ${_common} --set output_file=${name}_restarted.h5part
+            --set restart_file=${name}_checkpoint.h5part)
+  add_test(NAME app.${name}.restart.compare COMMAND compare_h5part ${name}_full.h5part ${name}_restarted.h5part)
+  set_tests_properties(app.${name}.restart.write PROPERTIES FIXTURES_SETUP ${name}_written PROCESSORS 2)
+  set_tests_properties(app.${name}.restart.continue PROPERTIES FIXTURES_REQUIRED ${name}_written
+    FIXTURES_SETUP ${name}_restarted PASS_REGULAR_EXPRESSION "restarting at step [1-9]")
+  set_tests_properties(app.${name}.restart.compare PROPERTIES FIXTURES_REQUIRED "${name}_written;${name}_restarted")
+  set_tests_properties(app.${name}.restart.write app.${name}.restart.continue app.${name}.restart.compare
+    PROPERTIES WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR} TIMEOUT 300
+    ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1")
+endfunction()
+
+# flecsph_add_bad_input_test(<name> APP <target> STATUS <code> [RANKS <n>] [FIXTURES ...]
+#                            [MESSAGES <regex>...] [ARGS ...]):
+# app.bad_input.<name> runs tests/apps/expect_failure.sh: the app with ARGS on RANKS ranks (1 by
+# default) must exit with STATUS, print every MESSAGES regex, and leave keep_<name>.h5part, an
+# earlier run's output, unchanged. Needs the fixture bad_input_files (tests/apps) and FIXTURES.
+function(flecsph_add_bad_input_test name)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "APP;RANKS;STATUS;FIXTURES" "MESSAGES;ARGS")
+  if(NOT arg_RANKS)
+    set(arg_RANKS 1)
+  endif()
+  add_test(NAME app.bad_input.${name}
+    COMMAND sh ${PROJECT_SOURCE_DIR}/tests/apps/expect_failure.sh ${arg_STATUS} keep_${name}.h5part ${arg_MESSAGES} --
+            ${FLECSPH_MPIEXEC_RUN} ${arg_RANKS} ${FLECSPH_MPIEXEC_FLAGS} $<TARGET_FILE:${arg_APP}> ${arg_ARGS}
+            --set output_file=keep_${name}.h5part --no-timers
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(app.bad_input.${name} PROPERTIES PROCESSORS ${arg_RANKS} TIMEOUT 120
+    FIXTURES_REQUIRED "bad_input_files;${arg_FIXTURES}" ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1")
+endfunction()
+
+# flecsph_add_validation(<name> APP <target> PARAMETERS <file> [RANKS <n1> <n2>] [ARGS <arg>...]):
+# validation.<name>.<n> runs the app with the parameter file and ARGS (its checks included) on n
+# ranks, one thread each, writing <name>_<n>.h5part; validation.<name>.rank_invariance compares
+# the last steps of the two runs bit by bit. RANKS: two rank counts, 1 and 2 by default.
+function(flecsph_add_validation name)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "APP;PARAMETERS" "RANKS;ARGS")
+  if(NOT arg_RANKS)
+    set(arg_RANKS 1 2)
+  endif()
+  list(LENGTH arg_RANKS _count)
+  if(NOT _count EQUAL 2)
+    message(FATAL_ERROR "flecsph_add_validation(${name}): RANKS takes two rank counts, not '${arg_RANKS}'")
+  endif()
+  set(_outputs)
+  set(_fixtures)
+  foreach(_n IN LISTS arg_RANKS)
+    add_test(NAME validation.${name}.${_n}
+      COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${_n} ${FLECSPH_MPIEXEC_FLAGS}
+              $<TARGET_FILE:${arg_APP}> ${arg_PARAMETERS} ${arg_ARGS} --set output_file=${name}_${_n}.h5part
+              --set progress_every=0 --set diagnostics_every=0 --no-timers
+      WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+    set_tests_properties(validation.${name}.${_n} PROPERTIES PROCESSORS ${_n} TIMEOUT 600
+      FIXTURES_SETUP ${name}_${_n} ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1")
+    list(APPEND _outputs ${name}_${_n}.h5part)
+    list(APPEND _fixtures ${name}_${_n})
+  endforeach()
+  add_test(NAME validation.${name}.rank_invariance COMMAND compare_h5part ${_outputs}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(validation.${name}.rank_invariance PROPERTIES FIXTURES_REQUIRED "${_fixtures}"
+    ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT}")
+endfunction()
+
+# flecsph_client_run(<name> <app> <parameter file> [args...]): clients.<name>.write runs the app
+# (apps/<app>/<parameter file>) on 2 ranks, writing <name>.h5part; fixture clients_<name>.
+function(flecsph_client_run name app parameter_file)
+  add_test(NAME clients.${name}.write
+    COMMAND ${FLECSPH_MPIEXEC_RUN} 2 ${FLECSPH_MPIEXEC_FLAGS} $<TARGET_FILE:${app}>
+            ${PROJECT_SOURCE_DIR}/apps/${app}/${parameter_file} --set output_file=${name}.h5part ${ARGN}
+            ${FLECSPH_QUIET_APP}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(clients.${name}.write PROPERTIES FIXTURES_SETUP clients_${name} PROCESSORS 2
+    TIMEOUT 300 ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1")
+endfunction()
+
+# flecsph_client_test(<name> <fixture> COMMAND ... [PROPERTIES ...]): a client reading the
+# fixture's file.
+function(flecsph_client_test name fixture)
+  cmake_parse_arguments(T "" "" "COMMAND;PROPERTIES" ${ARGN})
+  add_test(NAME clients.${name} COMMAND ${T_COMMAND} WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(clients.${name} PROPERTIES FIXTURES_REQUIRED clients_${fixture} TIMEOUT 300
+    ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT}" ${T_PROPERTIES})
+endfunction()
+
+# flecsph_add_tutorial(<chapter> TARGET <target> [RANKS n] [ARGS args...]): test
+# tutorial.<chapter> runs the chapter's program on n ranks (1 by default), one thread each, in
+# its own folder; the program checks its own result.
+function(flecsph_add_tutorial chapter)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "TARGET;RANKS" "ARGS")
+  if(NOT arg_RANKS)
+    set(arg_RANKS 1)
+  endif()
+  set(_directory ${CMAKE_CURRENT_BINARY_DIR}/${chapter})
+  file(MAKE_DIRECTORY ${_directory})
+  add_test(NAME tutorial.${chapter}
+    COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${arg_RANKS} ${FLECSPH_MPIEXEC_FLAGS}
+            $<TARGET_FILE:${arg_TARGET}> ${arg_ARGS} --no-timers
+    WORKING_DIRECTORY ${_directory})
+  set_tests_properties(tutorial.${chapter} PROPERTIES PROCESSORS ${arg_RANKS} TIMEOUT 300
+    ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1")
+endfunction()
