@@ -122,7 +122,7 @@ std::string parameter_declaration::violation(const parameter_value& value) const
     }
     case parameter_type::string: {
       const auto& text = std::get<std::string>(value);
-      if (choices_.empty()) return "";
+      if (choices_.empty() || std::find(choices_.begin(), choices_.end(), text) != choices_.end()) return "";
       return not_a_choice(text, choices_);
     }
     case parameter_type::boolean: return "";
