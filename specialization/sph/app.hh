@@ -6,7 +6,7 @@
 //   struct my_run : sph::app_state<D> { my::problem problem; };
 //   auto m = sph::make_app_control_model<my_run>({set_domain, create_particles});
 //   m.action("finalize", "report", report);          // the app's own comparisons
-//   return run.execute(m, state, check);                // check: the exit status, skipped by --control-model
+//   return context.execute(m, state, check);         // under --control-model: no run, no check
 #pragma once
 
 #include "specialization/sph/driver.hh"
