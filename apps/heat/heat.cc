@@ -1,10 +1,13 @@
 // heat: the example specialization of flecsi_lite, to copy when writing a new one. It solves
 // u_t = kappa u_xx on a distributed 1-D mesh with the control model (initialize, a cycle of
-// advance and analyze, finalize), tasks with field privileges, ghost copies and reductions.
+// advance and analyze, finalize), tasks with field privileges, ghost copies and reductions, and
+// its parameter keys declared once on the framework's app frame.
 //
 //   mpirun -np 2 heat --cells 4096 --time 0.01 [--check 1e-5] [--trace trace.json]
+//   mpirun -np 2 heat run.par --set kappa=0.5         # heat --parameters-help lists the keys
 #include "heat_tasks.hh"
 
+#include "flecsi_lite/app.hh"
 #include "flecsi_lite/control.hh"
 #include "flecsi_lite/runtime.hh"
 
@@ -12,14 +15,30 @@
 #include <cstdio>
 #include <iomanip>
 #include <memory>
+#include <string>
 
 namespace {
 using namespace flecsi_lite;
 
-struct simulation {
-  std::size_t cells;
-  double kappa, end_time, courant = 0.4, check_tolerance = -1;
-  int analyze_every;
+/// The parameters of a run, each a key of the parameter file (heat_parameters).
+struct heat_settings {
+  std::size_t cells = 4096;
+  double kappa = 1;         ///< diffusivity
+  double end_time = 0.002;
+  int analyze_every = 200;  ///< steps between diagnostics
+};
+
+runtime::parameter_block<heat_settings> heat_parameters() {
+  runtime::parameter_block<heat_settings> heat;
+  heat.integer("cells", &heat_settings::cells, "number of cells").at_least(2);
+  heat.real("kappa", &heat_settings::kappa, "diffusivity").greater_than(0);
+  heat.real("end_time", &heat_settings::end_time, "end time").greater_than(0);
+  heat.integer("analyze_every", &heat_settings::analyze_every, "steps between diagnostics").at_least(1);
+  return heat;
+}
+
+struct simulation : heat_settings {
+  double courant = 0.4;
   std::unique_ptr<heat::mesh> mesh;
   double time = 0, dt = 0;
   long step = 0;
@@ -86,33 +105,44 @@ control::control_model<simulation> make_control_model() {
   m.action("finalize", "report", report);
   return m;
 }
+
+/// The TOL of --check TOL (-1 without it); a bad number is a parameter_error (exit status 2).
+double check_tolerance(const runtime::options& opts) {
+  if (!opts.has("check")) return -1;
+  const std::string text = opts.get("check");
+  std::size_t used = 0;
+  double tolerance = -1;
+  try {
+    tolerance = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !(tolerance >= 0))
+    throw runtime::parameter_error("heat: --check takes a tolerance >= 0, not '" + text + "'");
+  return tolerance;
+}
 } // namespace
 
 int main(int argc, char** argv) {
-  runtime::options options("Explicit heat diffusion on a distributed 1-D mesh: the flecsi_lite example.");
-  options.value("cells", "N", "number of cells", "4096")
-    .value("kappa", "K", "diffusivity", "1")
-    .value("time", "T", "end time", "0.002")
-    .value("analyze-every", "N", "steps between diagnostics", "200")
-    .value("check", "TOL", "exit with status 1 if the final max error exceeds TOL");
-  runtime::runtime rt(argc, argv, options);
-  if (!rt.proceed()) return rt.exit_code();
-  simulation s;
-  try {
-    s.cells = std::stoul(rt.opts().get("cells"));
-    s.kappa = std::stod(rt.opts().get("kappa"));
-    s.end_time = std::stod(rt.opts().get("time"));
-    s.analyze_every = std::stoi(rt.opts().get("analyze-every"));
-    if (rt.opts().has("check")) s.check_tolerance = std::stod(rt.opts().get("check"));
-    if (s.cells < 2 || s.kappa <= 0 || s.end_time <= 0 || s.analyze_every < 1)
-      throw std::invalid_argument("cells >= 2, kappa > 0, time > 0 and analyze-every >= 1 are required");
-  } catch (const std::exception& e) {
-    log::error() << "heat: bad option value: " << e.what();
-    return 2;
-  }
-  const int status = make_control_model().execute(s);
-  if (status || s.check_tolerance < 0) return status;
-  const bool pass = s.error <= s.check_tolerance && s.heat_drift <= 1e-12;
-  if (!pass) log::error() << "heat: check failed: error " << s.error << " > " << s.check_tolerance;
-  return pass ? 0 : 1;
+  app::definition heat;
+  heat.program = "heat";
+  heat.summary = "Explicit heat diffusion on a distributed 1-D mesh: the flecsi_lite example.";
+  heat.declare_parameters = [](runtime::parameter_schema& schema) { heat_parameters().declare(schema); };
+  // The options of the first versions, each the --set of its key.
+  heat.option_keys = {{"cells", "cells"}, {"kappa", "kappa"}, {"time", "end_time"}, {"analyze-every", "analyze_every"}};
+  heat.declare_options = [](runtime::options& options) {
+    options.value("check", "TOL", "exit with status 1 if the final max error exceeds TOL or the heat drifts");
+  };
+  heat.run = [](const app::run_context& context) {
+    const double tolerance = check_tolerance(context.options());
+    simulation s;
+    static_cast<heat_settings&>(s) = heat_parameters().read(context.parameters());
+    return context.execute(make_control_model(), s, [tolerance](const simulation& state) {
+      if (tolerance < 0) return 0;
+      const bool pass = state.error <= tolerance && state.heat_drift <= 1e-12;
+      if (!pass) log::error() << "heat: check failed: error " << state.error << " > " << tolerance;
+      return pass ? 0 : 1;
+    });
+  };
+  return app::main(argc, argv, heat);
 }

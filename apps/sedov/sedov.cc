@@ -7,6 +7,7 @@
 
 #include "specialization/sph/app.hh"
 
+#include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
 
 #include <cmath>
@@ -53,10 +54,10 @@ int check(const sedov_run<D>& s, const runtime::options& opts) {
 }
 
 template<int D>
-int run(const runtime::parameters& p, const runtime::options& opts) {
+int run(const app::run_context& context) {
   sedov_run<D> s;
-  sph::configure(s, "sedov", p);
-  s.problem = sedov::problem_from(p);
+  sph::configure(s, context);
+  s.problem = sedov::problem_parameters().read(context.parameters());
   if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
     throw runtime::parameter_error("sedov: the similarity solution needs eos = ideal_gas");
   s.description = {{"blast_energy", s.problem.energy}, {"rho0", s.problem.rho0}};
@@ -64,27 +65,27 @@ int run(const runtime::parameters& p, const runtime::options& opts) {
     {[](sedov_run<D>& state) { sedov::set_periodic_box(state, state.problem); },
      [](sedov_run<D>& state) { sedov::create_lattice(state, state.problem); }});
   m.action("finalize", "report", report<D>);
-  const int status = m.execute(s);
-  if (status || !runtime::current_settings().control_model_file.empty()) return status;
-  return check(s, opts);
+  return context.execute(m, s, [&context](const sedov_run<D>& state) { return check(state, context.options()); });
 }
 } // namespace
 
 int main(int argc, char** argv) {
-  sph::app_definition app;
-  app.program = "sedov";
-  app.summary = "The Sedov-Taylor blast wave with SPH: H5Part output and the shock radius against the "
-                "similarity solution.";
-  app.declare_parameters = [](runtime::parameter_schema& schema) {
-    sedov::declare_parameters(schema);
-    sph::declare_physics_parameters(schema);
-    sph::declare_run_parameters(schema, {0.05, 10, 10, "sedov.h5part", "sedov.checkpoint.h5part"});
-  };
-  app.declare_options = [](runtime::options& options) {
+  sph::app_definition definition;
+  definition.program = "sedov";
+  definition.summary = "The Sedov-Taylor blast wave with SPH: H5Part output and the shock radius against the "
+                       "similarity solution.";
+  definition.declare_parameters = [](runtime::parameter_schema& schema) { sedov::problem_parameters().declare(schema); };
+  definition.run_defaults.end_time = 0.05;
+  definition.run_defaults.progress_every = 10;
+  definition.run_defaults.diagnostics_every = 10;
+  definition.file_defaults.output_file = "sedov.h5part";
+  definition.file_defaults.checkpoint_file = "sedov.checkpoint.h5part";
+  definition.declare_options = [](runtime::options& options) {
     options.value("check", "DR,DE", "exit with status 1 unless |shock radius error| <= DR and |energy change|/E <= DE");
   };
-  app.run = [](const runtime::parameters& p, const runtime::options& opts) {
-    return p.get<int>("dimension") == 2 ? run<2>(p, opts) : run<3>(p, opts);
+  definition.run = [](const app::run_context& context) {
+    const auto& p = context.parameters();
+    return p.get<int>("dimension") == 2 ? run<2>(context) : run<3>(context);
   };
-  return sph::app_main(argc, argv, app);
+  return sph::app_main(argc, argv, definition);
 }

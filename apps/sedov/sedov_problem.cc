@@ -1,29 +1,25 @@
-// The Sedov blast's parameters (sedov_problem.hh).
+// The Sedov blast's parameter keys, each declared once next to its member (sedov_problem.hh).
 #include "sedov_problem.hh"
 
 namespace sedov {
 
-void declare_parameters(flecsi_lite::runtime::parameter_schema& schema) {
-  const problem d;
-  schema.integer("dimension", "2 (cylindrical blast) or 3 (spherical)").default_value(d.dimension).range(2, 3);
-  schema.integer("particles_per_side", "lattice particles per side of the box").default_value(d.per_side).at_least(4);
-  schema.real("box_side", "side of the periodic box centred on the blast").default_value(d.side).greater_than(0);
-  schema.real("blast_energy", "energy deposited at the centre").default_value(d.energy).greater_than(0);
-  schema.real("rho0", "density of the medium").default_value(d.rho0).greater_than(0);
-  schema.real("background_pressure", "pressure of the (nearly cold) medium")
-    .default_value(d.background_pressure)
+namespace {
+flecsi_lite::runtime::parameter_block<problem> declare_problem() {
+  flecsi_lite::runtime::parameter_block<problem> blast;
+  blast.integer("dimension", &problem::dimension, "2 (cylindrical blast) or 3 (spherical)").range(2, 3);
+  blast.integer("particles_per_side", &problem::per_side, "lattice particles per side of the box").at_least(4);
+  blast.real("box_side", &problem::side, "side of the periodic box centred on the blast").greater_than(0);
+  blast.real("blast_energy", &problem::energy, "energy deposited at the centre").greater_than(0);
+  blast.real("rho0", &problem::rho0, "density of the medium").greater_than(0);
+  blast.real("background_pressure", &problem::background_pressure, "pressure of the (nearly cold) medium")
     .greater_than(0);
+  return blast;
 }
+} // namespace
 
-problem problem_from(const flecsi_lite::runtime::parameters& p) {
-  problem result;
-  result.dimension = p.get<int>("dimension");
-  result.per_side = p.get<std::int64_t>("particles_per_side");
-  result.side = p.get<double>("box_side");
-  result.energy = p.get<double>("blast_energy");
-  result.rho0 = p.get<double>("rho0");
-  result.background_pressure = p.get<double>("background_pressure");
-  return result;
+const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
+  static const auto block = declare_problem();
+  return block;
 }
 
 } // namespace sedov

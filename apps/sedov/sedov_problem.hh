@@ -25,8 +25,9 @@ struct problem {
   double background_pressure = 1e-6;
 };
 
-void declare_parameters(flecsi_lite::runtime::parameter_schema& schema);
-problem problem_from(const flecsi_lite::runtime::parameters& p);
+/// The problem keys, each bound to its member of `problem` (the physics keys are
+/// sph::physics_parameters).
+const flecsi_lite::runtime::parameter_block<problem>& problem_parameters();
 
 /// The domain: the periodic box [-L/2, L/2]^D.
 template<int D>

@@ -7,6 +7,7 @@
 
 #include "specialization/sph/app.hh"
 
+#include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
 
 #include <cmath>
@@ -75,10 +76,10 @@ int check(const sod_run<D>& s, const runtime::options& opts) {
 }
 
 template<int D>
-int run(const runtime::parameters& p, const runtime::options& opts) {
+int run(const app::run_context& context) {
   sod_run<D> s;
-  sph::configure(s, "sod", p);
-  s.problem = sod::problem_from(p);
+  sph::configure(s, context);
+  s.problem = sod::problem_parameters().read(context.parameters());
   if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
     throw runtime::parameter_error("sod: the exact solution needs eos = ideal_gas");
   s.description = {{"rho_left", s.problem.rho_left},     {"p_left", s.problem.p_left},
@@ -89,29 +90,29 @@ int run(const runtime::parameters& p, const runtime::options& opts) {
     {[](sod_run<D>& state) { sod::set_tube_domain(state, state.problem); },
      [](sod_run<D>& state) { sod::create_tube(state, state.problem); }});
   m.action("finalize", "report", report<D>);
-  const int status = m.execute(s);
-  if (status || !runtime::current_settings().control_model_file.empty()) return status;
-  return check(s, opts);
+  return context.execute(m, s, [&context](const sod_run<D>& state) { return check(state, context.options()); });
 }
 } // namespace
 
 int main(int argc, char** argv) {
-  sph::app_definition app;
-  app.program = "sod";
-  app.summary = "The Sod shock tube with SPH: H5Part output and L1 errors against the exact solution.";
-  app.declare_parameters = [](runtime::parameter_schema& schema) {
-    sod::declare_parameters(schema);
-    sph::declare_physics_parameters(schema);
-    sph::declare_run_parameters(schema, {0.2, 100, 1, "sod.h5part", "sod.checkpoint.h5part"});
-  };
-  app.declare_options = [](runtime::options& options) {
+  sph::app_definition definition;
+  definition.program = "sod";
+  definition.summary = "The Sod shock tube with SPH: H5Part output and L1 errors against the exact solution.";
+  definition.declare_parameters = [](runtime::parameter_schema& schema) { sod::problem_parameters().declare(schema); };
+  definition.run_defaults.end_time = 0.2;
+  definition.run_defaults.progress_every = 100;
+  definition.run_defaults.diagnostics_every = 1;
+  definition.file_defaults.output_file = "sod.h5part";
+  definition.file_defaults.checkpoint_file = "sod.checkpoint.h5part";
+  definition.declare_options = [](runtime::options& options) {
     options.value("check-l1", "RHO,P,V", "exit with status 1 if an L1 error exceeds its bound")
       .value("check-conservation", "DP,DE",
              "exit with status 1 unless mass is exact, |momentum change| <= DP and |energy change|/E <= DE");
   };
-  app.run = [](const runtime::parameters& p, const runtime::options& opts) {
+  definition.run = [](const app::run_context& context) {
+    const auto& p = context.parameters();
     const int dimension = p.get<int>("dimension");
-    return dimension == 1 ? run<1>(p, opts) : dimension == 2 ? run<2>(p, opts) : run<3>(p, opts);
+    return dimension == 1 ? run<1>(context) : dimension == 2 ? run<2>(context) : run<3>(context);
   };
-  return sph::app_main(argc, argv, app);
+  return sph::app_main(argc, argv, definition);
 }

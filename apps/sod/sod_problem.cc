@@ -1,4 +1,5 @@
-// The Sod shock tube's parameters, particle layout and initial particles (sod_problem.hh).
+// The Sod shock tube's parameter keys (declared once), particle layout and initial particles
+// (sod_problem.hh).
 #include "sod_problem.hh"
 
 #include "flecsi_lite/runtime.hh"
@@ -7,52 +8,46 @@
 
 namespace sod {
 
-void declare_parameters(flecsi_lite::runtime::parameter_schema& schema) {
-  const problem d;
-  schema.integer("dimension", "space dimension of the tube (2, 3: periodic transverse axes)")
-    .default_value(d.dimension)
-    .range(1, 3);
-  schema.integer("particles", "1D: fluid particles (equal masses); 2D/3D: mean particle spacings along x on the left")
-    .default_value(d.particles)
-    .at_least(2);
-  schema.choice("lattice", {"body_centred", "cubic"}, "2D/3D: lattice of the particles")
-    .default_value("body_centred");
-  schema.real("rho_left", "density left of the interface").default_value(d.rho_left).greater_than(0);
-  schema.real("p_left", "pressure left of the interface").default_value(d.p_left).greater_than(0);
-  schema.real("rho_right", "density right of the interface").default_value(d.rho_right).greater_than(0);
-  schema.real("p_right", "pressure right of the interface").default_value(d.p_right).greater_than(0);
-  schema.real("x_min", "left end of the tube (a wall)").default_value(d.x_min);
-  schema.real("x_interface", "initial position of the discontinuity").default_value(d.x_interface);
-  schema.real("x_max", "right end of the tube (a wall)").default_value(d.x_max);
-  schema.real("tube_width", "2D/3D: period of the transverse axes (0: about 8 mean particle spacings)")
-    .default_value(d.width)
-    .at_least(0);
-  schema.integer("wall_layers", "fixed wall particles at each end (0: as many as the kernel reaches)")
-    .default_value(d.wall_layers)
-    .at_least(0);
-  schema.real("l1_window", "L1 errors over the particles with |x - x_interface| < l1_window")
-    .default_value(d.window)
-    .greater_than(0);
+const flecsi_lite::runtime::name_table<lattice_type>& lattice_names() {
+  static const flecsi_lite::runtime::name_table<lattice_type> table{
+    "lattice", {{"body_centred", lattice_type::body_centred}, {"cubic", lattice_type::cubic}}};
+  return table;
 }
 
-problem problem_from(const flecsi_lite::runtime::parameters& p) {
-  problem result;
-  result.dimension = p.get<int>("dimension");
-  result.particles = p.get<std::int64_t>("particles");
-  result.lattice = p.get<std::string>("lattice") == "cubic" ? lattice_type::cubic : lattice_type::body_centred;
-  result.rho_left = p.get<double>("rho_left");
-  result.p_left = p.get<double>("p_left");
-  result.rho_right = p.get<double>("rho_right");
-  result.p_right = p.get<double>("p_right");
-  result.x_min = p.get<double>("x_min");
-  result.x_interface = p.get<double>("x_interface");
-  result.x_max = p.get<double>("x_max");
-  result.width = p.get<double>("tube_width");
-  result.wall_layers = p.get<std::int64_t>("wall_layers");
-  result.window = p.get<double>("l1_window");
-  if (!(result.x_min < result.x_interface && result.x_interface < result.x_max))
-    throw flecsi_lite::runtime::parameter_error("sod: x_min < x_interface < x_max is required");
-  return result;
+namespace {
+flecsi_lite::runtime::parameter_block<problem> declare_problem() {
+  flecsi_lite::runtime::parameter_block<problem> tube;
+  tube.integer("dimension", &problem::dimension, "space dimension of the tube (2, 3: periodic transverse axes)")
+    .range(1, 3);
+  tube.integer("particles", &problem::particles,
+               "1D: fluid particles (equal masses); 2D/3D: mean particle spacings along x on the left")
+    .at_least(2);
+  tube.choice("lattice", &problem::lattice, lattice_names(), "2D/3D: lattice of the particles");
+  tube.real("rho_left", &problem::rho_left, "density left of the interface").greater_than(0);
+  tube.real("p_left", &problem::p_left, "pressure left of the interface").greater_than(0);
+  tube.real("rho_right", &problem::rho_right, "density right of the interface").greater_than(0);
+  tube.real("p_right", &problem::p_right, "pressure right of the interface").greater_than(0);
+  tube.real("x_min", &problem::x_min, "left end of the tube (a wall)");
+  tube.real("x_interface", &problem::x_interface, "initial position of the discontinuity");
+  tube.real("x_max", &problem::x_max, "right end of the tube (a wall)");
+  tube.real("tube_width", &problem::width, "2D/3D: period of the transverse axes (0: about 8 mean particle spacings)")
+    .at_least(0);
+  tube.integer("wall_layers", &problem::wall_layers,
+               "fixed wall particles at each end (0: as many as the kernel reaches)")
+    .at_least(0);
+  tube.real("l1_window", &problem::window, "L1 errors over the particles with |x - x_interface| < l1_window")
+    .greater_than(0);
+  tube.check([](const problem& p) {
+    if (!(p.x_min < p.x_interface && p.x_interface < p.x_max))
+      throw flecsi_lite::runtime::parameter_error("sod: x_min < x_interface < x_max is required");
+  });
+  return tube;
+}
+} // namespace
+
+const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
+  static const auto block = declare_problem();
+  return block;
 }
 
 namespace {

@@ -37,9 +37,11 @@ struct problem {
   double window = 0.4;           ///< L1 errors over |x - x_interface| < window
 };
 
-/// The problem keys (the physics keys are sph::declare_physics_parameters).
-void declare_parameters(flecsi_lite::runtime::parameter_schema& schema);
-problem problem_from(const flecsi_lite::runtime::parameters& p);
+/// The names of the lattices in parameter files.
+const flecsi_lite::runtime::name_table<lattice_type>& lattice_names();
+/// The problem keys, each bound to its member of `problem` (the physics keys are
+/// sph::physics_parameters); read() requires x_min < x_interface < x_max.
+const flecsi_lite::runtime::parameter_block<problem>& problem_parameters();
 
 /// The particles of the tube: layers along x (left walls, left fluid, right fluid, right walls),
 /// each layer a square lattice of `across^(D-1)` particles over the periodic transverse axes. All

@@ -10,6 +10,7 @@
 
 #include "specialization/sph/driver.hh"
 
+#include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
 
 #include <mpi.h>
@@ -38,9 +39,10 @@ struct bench_state : sph::simulation<D> {
 /// physics keys (its run control and output are its own).
 runtime::parameters load_parameters(const std::string& path, const std::vector<std::string>& overrides) {
   runtime::parameter_schema schema;
-  sedov::declare_parameters(schema);
-  sph::declare_physics_parameters(schema);
-  sph::declare_run_parameters(schema, {0.05, 0, 0, "none", "none"});
+  sedov::problem_parameters().declare(schema);
+  sph::physics_parameters().declare(schema);
+  sph::run_parameters({0.05, 0, 0, 0}).declare(schema);
+  app::file_parameters().declare(schema);
   return runtime::parameters::load(schema, path, overrides);
 }
 
@@ -164,9 +166,9 @@ int main(int argc, char** argv) {
                                        "eta=" + rt.opts().get("eta")};
     for (const auto& extra : rt.opts().all("set")) overrides.push_back(extra);
     const auto p = load_parameters(rt.opts().get("parameters"), overrides);
-    s.problem = sedov::problem_from(p);
+    s.problem = sedov::problem_parameters().read(p);
     if (s.problem.dimension != D) throw runtime::parameter_error("bench_sedov: dimension must be 3");
-    s.physics = sph::physics_from(p);
+    s.physics = sph::physics_parameters().read(p);
     s.run.end_time = std::numeric_limits<double>::max();
     s.run.progress_every = 0;
     s.run.diagnostics_every = 0;

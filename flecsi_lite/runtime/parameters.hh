@@ -1,7 +1,8 @@
 // Parameter files in the style of FleCSPH's .par files: `key = value` lines, `#` comments (also
 // after a value), blank lines; a schema declared by the application gives every key its type,
 // default (or none: required), allowed range or choices and a one-line description. Any key can
-// be overridden on the command line (--set key=value, applied after the file).
+// be overridden on the command line (--set key=value, applied after the file). Settings structs
+// declare their keys once, bound to their members, with parameter_block (parameter_block.hh).
 //
 //   parameter_schema schema;
 //   schema.real("gamma", "adiabatic index").default_value(5.0 / 3).range(1, 3);
@@ -125,6 +126,8 @@ public:
   parameter_declaration& choice(const std::string& name, std::vector<std::string> choices,
                                 const std::string& description);
   parameter_declaration& real_list(const std::string& name, const std::string& description);
+  /// Every key of `other`, after the keys declared so far (a key declared twice is a logic_error).
+  void add(const parameter_schema& other);
 
   /// nullptr when `name` is not declared.
   const parameter_declaration* find(const std::string& name) const;

@@ -2,6 +2,8 @@
 // P = c^2 rho; each gives the pressure and the adiabatic sound speed c^2 = (dP/drho)_s.
 #pragma once
 
+#include "flecsi_lite/runtime.hh"
+
 #include <Kokkos_Core.hpp>
 
 #include <cmath>
@@ -60,9 +62,14 @@ struct isothermal {
 
 enum class eos_type { ideal_gas, polytropic, isothermal };
 
-/// "ideal_gas", "polytropic" or "isothermal".
+/// "ideal_gas", "polytropic", "isothermal": the one table of the "eos" key's choices, its help and
+/// its errors.
+const flecsi_lite::runtime::name_table<eos_type>& eos_names();
+
+/// eos_names().name(type).
 std::string_view eos_name(eos_type type);
-/// Throws std::invalid_argument naming the valid equations of state when `name` is unknown.
+/// eos_names().value(name): throws std::invalid_argument naming the valid equations of state
+/// (and the nearest one) when `name` is unknown.
 eos_type eos_from_name(std::string_view name);
 
 /// An equation of state chosen at run time (one branch per particle, outside the pair loops).

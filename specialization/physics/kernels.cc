@@ -1,36 +1,20 @@
-// Kernel names for parameter files, with "did you mean" errors for misspelled names.
+// The name table of the smoothing kernels (kernels.hh), from the names of the kernel shapes.
 #include "specialization/physics/kernels.hh"
-
-#include "flecsi_lite/util.hh"
-
-#include <stdexcept>
-#include <string>
-#include <vector>
 
 namespace flecsph::physics {
 
-std::string_view kernel_name(kernel_type type) {
-  switch (type) {
-  case kernel_type::cubic_spline: return cubic_spline_shape::name;
-  case kernel_type::wendland_c2: return wendland_c2_shape::name;
-  case kernel_type::wendland_c4: return wendland_c4_shape::name;
-  case kernel_type::wendland_c6: return wendland_c6_shape::name;
-  }
-  throw std::invalid_argument("invalid kernel_type value");
+const flecsi_lite::runtime::name_table<kernel_type>& kernel_names() {
+  static const flecsi_lite::runtime::name_table<kernel_type> table{
+    "kernel",
+    {{cubic_spline_shape::name, kernel_type::cubic_spline},
+     {wendland_c2_shape::name, kernel_type::wendland_c2},
+     {wendland_c4_shape::name, kernel_type::wendland_c4},
+     {wendland_c6_shape::name, kernel_type::wendland_c6}}};
+  return table;
 }
 
-kernel_type kernel_from_name(std::string_view name) {
-  std::vector<std::string> names;
-  for (kernel_type type : all_kernel_types) {
-    if (kernel_name(type) == name) return type;
-    names.emplace_back(kernel_name(type));
-  }
-  std::string message = "unknown kernel '" + std::string(name) + "'";
-  if (auto nearest = flecsi_lite::util::nearest_name(name, names); !nearest.empty())
-    message += "; did you mean '" + nearest + "'?";
-  message += " (valid kernels:";
-  for (const auto& valid : names) message += " " + valid;
-  throw std::invalid_argument(message + ")");
-}
+std::string_view kernel_name(kernel_type type) { return kernel_names().name(type); }
+
+kernel_type kernel_from_name(std::string_view name) { return kernel_names().value(name); }
 
 } // namespace flecsph::physics

@@ -5,6 +5,8 @@
 #include "specialization/physics/kernels/cubic_spline.hh"
 #include "specialization/physics/kernels/wendland.hh"
 
+#include "flecsi_lite/runtime.hh"
+
 #include <array>
 #include <string_view>
 
@@ -16,11 +18,14 @@ inline constexpr std::array<kernel_type, 4> all_kernel_types = {
   kernel_type::cubic_spline, kernel_type::wendland_c2, kernel_type::wendland_c4,
   kernel_type::wendland_c6};
 
-/// The parameter-file name of a kernel.
-std::string_view kernel_name(kernel_type type);
+/// The parameter-file names of the kernels (the shapes' own names), the one table of the "kernel"
+/// key's choices, its help and its errors.
+const flecsi_lite::runtime::name_table<kernel_type>& kernel_names();
 
-/// The kernel called `name`; throws std::invalid_argument naming the valid kernels (and the
-/// nearest one) when it is unknown.
+/// kernel_names().name(type).
+std::string_view kernel_name(kernel_type type);
+/// kernel_names().value(name): throws std::invalid_argument naming the valid kernels (and the
+/// nearest one) when `name` is unknown.
 kernel_type kernel_from_name(std::string_view name);
 
 /// Calls `function(kernel)` with the empty kernel tag type of `type` in dimension D, e.g.

@@ -1,12 +1,12 @@
 // The frame every SPH app (sod, sedov, ...) shares, so that an app is its problem and its
 // reports: the settings read from the parameters, initial particles from the problem, from an
-// H5Part file or from a checkpoint, the H5Part output at a cadence, checkpoints, and main() with
-// its options and error handling.
+// H5Part file or from a checkpoint, the H5Part output at a cadence, checkpoints, and main() on
+// the framework's app frame (flecsi_lite/app.hh).
 //
 //   struct my_run : sph::app_state<D> { my::problem problem; };
 //   auto m = sph::make_app_control_model<my_run>({set_domain, create_particles});
 //   m.action("finalize", "report", report);          // the app's own comparisons
-//   return m.execute(state);
+//   return context.execute(m, state, check);         // under --control-model: no run, no check
 #pragma once
 
 #include "specialization/sph/driver.hh"
@@ -14,6 +14,7 @@
 #include "specialization/sph/particle_output.hh"
 #include "specialization/sph/restart.hh"
 
+#include "flecsi_lite/app.hh"
 #include "flecsi_lite/control.hh"
 #include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"
@@ -36,13 +37,14 @@ struct app_state : simulation<D> {
   flecsi_lite::io::run_state description;
 };
 
-/// Reads the physics, run-control and file keys into `s`.
+/// Reads the physics, run-control and file keys into `s`; the program's name from the frame.
 template<int D>
-void configure(app_state<D>& s, const std::string& program, const flecsi_lite::runtime::parameters& p) {
-  s.program = program;
-  s.physics = physics_from(p);
-  s.run = run_settings_from(p);
-  s.files = io_settings_from(p);
+void configure(app_state<D>& s, const flecsi_lite::app::run_context& run) {
+  const auto& p = run.parameters();
+  s.program = run.program();
+  s.physics = physics_parameters().read(p);
+  s.run = run_parameters().read(p);
+  s.files = flecsi_lite::app::file_parameters().read(p);
   s.parameters_text = p.resolved_text();
 }
 
@@ -125,18 +127,24 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
   return m;
 }
 
-/// An app's main(): its name and help, its parameter keys and options, and the run.
+/// An SPH app for the framework's frame (flecsi_lite/app.hh): its name and help, its problem's
+/// keys, the defaults it chooses for the run-control and file keys, its options and the run.
 struct app_definition {
   std::string program;
   std::string summary;  ///< first line of --help
-  std::function<void(flecsi_lite::runtime::parameter_schema&)> declare_parameters;
+  std::function<void(flecsi_lite::runtime::parameter_schema&)> declare_parameters;  ///< the problem's keys
+  run_settings run_defaults;  ///< end_time, progress_every, diagnostics_every of the problem
+  io_settings file_defaults;  ///< output_file and checkpoint_file of the problem
   std::function<void(flecsi_lite::runtime::options&)> declare_options;  ///< the app's checks
-  std::function<int(const flecsi_lite::runtime::parameters&, const flecsi_lite::runtime::options&)> run;
+  std::function<int(const flecsi_lite::app::run_context&)> run;
 };
 
-/// Parses the options (parameter file, --set KEY=VALUE, --parameters-help and the app's), loads
-/// the parameters and runs. Exit status: the run's; 2 for bad parameters; 3 for any other error
-/// (bad files, impossible values), each reported on rank 0 with what was wrong.
+/// The frame's definition of `app`: its keys, then the physics, run-control and file keys.
+flecsi_lite::app::definition frame_definition(const app_definition& app);
+
+/// flecsi_lite::app::main of frame_definition(app): a parameter file, --set KEY=VALUE,
+/// --parameters-help, --control-model, and the frame's exit statuses (0 run; 1 a check failed;
+/// 2 bad parameters; 3 any other error, reported on rank 0 with what was wrong).
 int app_main(int argc, char** argv, const app_definition& app);
 
 } // namespace flecsph::sph

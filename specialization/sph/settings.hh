@@ -1,11 +1,13 @@
-// The physics settings of the SPH specialization (kernel, equation of state, dissipation,
-// smoothing length, time step), and the parameter-file keys that set them, shared by every app.
+// The physics and run-control settings of the SPH specialization (kernel, equation of state,
+// dissipation, smoothing length, time step; end time and reports) and the parameter-file keys
+// that set them, each declared once next to the member it fills, shared by every app.
 #pragma once
 
 #include "specialization/physics/eos.hh"
 #include "specialization/physics/kernels.hh"
 #include "specialization/physics/viscosity.hh"
 
+#include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
 
 #include <string>
@@ -34,10 +36,9 @@ struct physics_settings {
   double distribution_skin = 0.5;
 };
 
-/// Declares the physics keys (kernel, eos, gamma, ..., search_margin) with their defaults.
-void declare_physics_parameters(flecsi_lite::runtime::parameter_schema& schema);
-/// Reads the keys declared by declare_physics_parameters.
-physics_settings physics_from(const flecsi_lite::runtime::parameters& p);
+/// The physics keys (kernel, eos, gamma, ..., distribution_skin), each bound to its member, with
+/// the defaults of physics_settings.
+const flecsi_lite::runtime::parameter_block<physics_settings>& physics_parameters();
 
 /// How long to run and how often to report.
 struct run_settings {
@@ -47,30 +48,11 @@ struct run_settings {
   long diagnostics_every = 1; ///< steps between conserved-quantities lines (0: first and last only)
 };
 
-/// Files a run reads and writes; an empty name is "none".
-struct io_settings {
-  std::string output_file;
-  double output_every = 0;  ///< simulation time between outputs; 0: first and last step only
-  std::string checkpoint_file;
-  long checkpoint_every = 0;  ///< steps between checkpoints; 0: none
-  std::string restart_file;   ///< continue the run of this checkpoint
-  std::string initial_data;   ///< H5Part file of the initial particles
-  long initial_data_step = -1;  ///< its Step#k; -1: the last
-};
+/// The run-control keys end_time, max_steps, progress_every and diagnostics_every, with the
+/// defaults each problem chooses in `defaults`.
+flecsi_lite::runtime::parameter_block<run_settings> run_parameters(const run_settings& defaults = {});
 
-/// The defaults of the run-control keys, which each problem chooses.
-struct run_parameter_defaults {
-  double end_time;
-  long progress_every, diagnostics_every;
-  std::string output_file, checkpoint_file;
-};
-/// Declares the run-control and file keys every SPH app shares: end_time, max_steps,
-/// progress_every, diagnostics_every, output_file, output_every, checkpoint_file,
-/// checkpoint_every, restart_file, initial_data, initial_data_step.
-void declare_run_parameters(flecsi_lite::runtime::parameter_schema& schema, const run_parameter_defaults& defaults);
-/// Reads the run-control keys.
-run_settings run_settings_from(const flecsi_lite::runtime::parameters& p);
-/// Reads the file keys; contradictory ones (restart_file and initial_data) are parameter errors.
-io_settings io_settings_from(const flecsi_lite::runtime::parameters& p);
+/// Files a run reads and writes (the file keys of the app frame); an empty name is "none".
+using io_settings = flecsi_lite::app::file_settings;
 
 } // namespace flecsph::sph

@@ -1,0 +1,27 @@
+// The files a run reads and writes, as parameter keys every app of the frame shares (frame.hh):
+// output, checkpoints, restart and initial data, with the checks of keys that contradict.
+#pragma once
+
+#include "flecsi_lite/runtime/parameter_block.hh"
+
+#include <string>
+
+namespace flecsi_lite::app {
+
+/// An empty file name is "none" (in a parameter file: `output_file = none`).
+struct file_settings {
+  std::string output_file;      ///< H5Part output
+  double output_every = 0;      ///< simulation time between outputs; 0: first and last step only
+  std::string checkpoint_file;  ///< replaced at each checkpoint
+  long checkpoint_every = 0;    ///< steps between checkpoints; 0: none
+  std::string restart_file;     ///< continue the run of this checkpoint
+  std::string initial_data;     ///< H5Part file of the initial particles
+  long initial_data_step = -1;  ///< its Step#k; -1: the last
+};
+
+/// The keys output_file, output_every, checkpoint_file, checkpoint_every, restart_file,
+/// initial_data and initial_data_step with `defaults`; read() rejects restart_file with
+/// initial_data, and checkpoint_every without a checkpoint_file (parameter_error).
+runtime::parameter_block<file_settings> file_parameters(const file_settings& defaults = {});
+
+} // namespace flecsi_lite::app

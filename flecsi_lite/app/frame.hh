@@ -1,0 +1,95 @@
+// The app frame: main() of every flecsi_lite program that takes parameters. It declares the
+// options (a parameter file, --set KEY=VALUE, --parameters-help, options that set keys, the app's
+// own), loads the parameters on every rank, runs, and turns errors into exit statuses.
+//
+//   app::definition heat;
+//   heat.program = "heat";
+//   heat.declare_parameters = [](runtime::parameter_schema& s) { heat_parameters().declare(s); };
+//   heat.run = [](const app::run_context& run) {
+//     simulation s{heat_parameters().read(run.parameters())};
+//     return run.execute(make_control_model(), s, [](const simulation& s) { return s.passed ? 0 : 1; });
+//   };
+//   int main(int argc, char** argv) { return app::main(argc, argv, heat); }
+//
+// Exit statuses: 0 the run (or --help, --parameters-help, --control-model); 1 a check of the app
+// failed; 2 bad options or parameters; 3 any other error (a bad file, an impossible value), each
+// reported on rank 0 with what was wrong.
+#pragma once
+
+#include "flecsi_lite/app/file_settings.hh"
+#include "flecsi_lite/control/control_model.hh"
+#include "flecsi_lite/runtime/options.hh"
+#include "flecsi_lite/runtime/parameters.hh"
+#include "flecsi_lite/runtime/runtime.hh"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace flecsi_lite::app {
+
+/// A command-line option that sets a parameter key: with {"time", "end_time"}, `--time 0.1` is
+/// `--set end_time=0.1` (applied before the --set overrides, which win).
+struct option_key {
+  std::string option;
+  std::string key;
+};
+
+class run_context;
+
+/// What an app gives the frame.
+struct definition {
+  std::string program;  ///< the app's name, in messages
+  std::string summary;  ///< first line of --help
+  /// The app's keys (see runtime::parameter_block).
+  std::function<void(runtime::parameter_schema&)> declare_parameters;
+  /// With a value, the file keys (file_settings.hh) are declared after the app's, with these defaults.
+  std::optional<file_settings> files;
+  std::vector<option_key> option_keys;
+  /// The app's own options (e.g. its checks), besides the frame's and the runtime's.
+  std::function<void(runtime::options&)> declare_options;
+  /// The run, once the parameters are loaded; returns the exit status.
+  std::function<int(const run_context&)> run;
+};
+
+/// What a run sees: the resolved parameters and the options.
+class run_context {
+public:
+  run_context(const definition& app, const runtime::parameters& parameters, const runtime::options& options)
+    : app_(app), parameters_(parameters), options_(options) {}
+
+  const std::string& program() const { return app_.program; }
+  const runtime::parameters& parameters() const { return parameters_; }
+  const runtime::options& options() const { return options_; }
+
+  /// True under --control-model: the model is written, nothing runs and nothing is checked.
+  static bool control_model_only() { return !runtime::current_settings().control_model_file.empty(); }
+
+  /// Runs `model` on `state` and returns `check(state)`, the exit status of the app's checks;
+  /// under --control-model, writes the model (on rank 0) and returns 0 without running or checking.
+  template<class State, class Check>
+  int execute(const control::control_model<State>& model, State& state, Check&& check) const {
+    const int status = model.execute(state);
+    if (status || control_model_only()) return status;
+    return check(static_cast<const State&>(state));
+  }
+  template<class State>
+  int execute(const control::control_model<State>& model, State& state) const {
+    return model.execute(state);
+  }
+
+private:
+  const definition& app_;
+  const runtime::parameters& parameters_;
+  const runtime::options& options_;
+};
+
+/// The schema of `app`: its keys, then the file keys when it has them.
+runtime::parameter_schema schema_of(const definition& app);
+
+/// Starts the runtime, parses the options, loads the parameters and runs `app` (see the exit
+/// statuses above). Collective.
+int main(int argc, char** argv, const definition& app);
+
+} // namespace flecsi_lite::app
