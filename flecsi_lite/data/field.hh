@@ -87,7 +87,8 @@ struct field {
   public:
     explicit definition(std::string name, data::persistence persistence = {})
       : id_(data::registered_fields<Topo>().size()) {
-      data::registered_fields<Topo>().push_back(data::make_registered_field<T>(std::move(name), std::move(persistence)));
+      auto entry = data::make_registered_field<T>(std::move(name), std::move(persistence));
+      data::registered_fields<Topo>().push_back(std::move(entry));
     }
     reference<Topo> operator()(Topo& topology) const { return {topology, id_}; }
     std::size_t id() const { return id_; }

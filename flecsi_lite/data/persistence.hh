@@ -11,7 +11,8 @@
 //   initial   read from initial data: required, or optional (absent: zero, or for an id field
 //             the entity's index in the step); the RULE checks every value read (also at restart).
 //
-//   static inline const definition<double> density{"rho", persist::output().restart().initial_optional(at_least(0, "densities"))};
+//   static inline const definition<double> density{
+//     "rho", persist::output().restart().initial_optional(persist::at_least(0, "densities"))};
 #pragma once
 
 #include <cmath>
@@ -85,8 +86,12 @@ public:
   persistence padded() const { return with([](persistence& p) { p.padded_ = true; }); }
   persistence output() const { return with([](persistence& p) { p.roles_ = p.roles_ | role::output; }); }
   persistence restart() const { return with([](persistence& p) { p.roles_ = p.roles_ | role::restart; }); }
-  persistence initial_required(value_rule rule = {}) const { return initial(initial_reading::required, std::move(rule)); }
-  persistence initial_optional(value_rule rule = {}) const { return initial(initial_reading::optional, std::move(rule)); }
+  persistence initial_required(value_rule rule = {}) const {
+    return initial(initial_reading::required, std::move(rule));
+  }
+  persistence initial_optional(value_rule rule = {}) const {
+    return initial(initial_reading::optional, std::move(rule));
+  }
   /// Optional initial data that defaults to the entity's index in the step (for ids).
   persistence initial_optional_index() const { return initial(initial_reading::optional_index, {}); }
 
@@ -95,8 +100,6 @@ public:
   bool is_padded() const { return padded_; }
   initial_reading reading() const { return reading_; }
   const value_rule& rule() const { return rule_; }
-  /// The names given with as() (empty: the defaults, see dataset_names).
-  const std::vector<std::string>& given_datasets() const { return datasets_; }
 
   /// The dataset names of a field called `field_name` with `components` components: as given,
   /// or the defaults.
@@ -140,8 +143,12 @@ data::persistence as(Names&&... names) {
 }
 inline data::persistence output() { return data::persistence().output(); }
 inline data::persistence restart() { return data::persistence().restart(); }
-inline data::persistence initial_required(data::value_rule rule = {}) { return data::persistence().initial_required(std::move(rule)); }
-inline data::persistence initial_optional(data::value_rule rule = {}) { return data::persistence().initial_optional(std::move(rule)); }
+inline data::persistence initial_required(data::value_rule rule = {}) {
+  return data::persistence().initial_required(std::move(rule));
+}
+inline data::persistence initial_optional(data::value_rule rule = {}) {
+  return data::persistence().initial_optional(std::move(rule));
+}
 using data::at_least;
 using data::must_be_finite;
 using data::must_be_positive;

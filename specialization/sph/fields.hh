@@ -46,27 +46,40 @@ struct fields {
   static const auto& mass() { return particle_tree<D>::mass; }
   static const auto& smoothing_length() { return particle_tree<D>::smoothing_length; }
 
-  static inline const definition<particle_kind> kind{"kind", persist::output().restart().initial_optional(persist::one_of({0, 1}, "0 for fluid or 1 for wall particles"))};
-  static inline const definition<vector<D>> velocity{"velocity", persist::as("vx", "vy", "vz").padded().output().restart().initial_optional(persist::must_be_finite("velocities"))};  ///< v (predicted during a step)
-  static inline const definition<vector<D>> velocity_half{"velocity_half"};   ///< v at the half step (leapfrog)
-  static inline const definition<vector<D>> acceleration{"acceleration", persist::as("ax", "ay", "az").restart()};  ///< dv/dt, eq. (1.9)
-  static inline const definition<double> density{"rho", persist::output().restart().initial_optional(persist::at_least(0, "densities"))};  ///< eq. (1.3)
+  // Output, restart and initial data.
+  static inline const definition<particle_kind> kind{"kind", persist::output().restart().initial_optional(
+    persist::one_of({0, 1}, "0 for fluid or 1 for wall particles"))};
+  /// v (predicted during a step)
+  static inline const definition<vector<D>> velocity{"velocity", persist::as("vx", "vy", "vz").padded().output().restart()
+    .initial_optional(persist::must_be_finite("velocities"))};
+  /// eq. (1.3); read as an initial guess only
+  static inline const definition<double> density{
+    "rho", persist::output().restart().initial_optional(persist::at_least(0, "densities"))};
+  /// specific
+  static inline const definition<double> internal_energy{
+    "u", persist::output().restart().initial_required(persist::at_least(0, "internal energies"))};
+  // Output and restart.
   static inline const definition<double> pressure{"P", persist::output().restart()};
   static inline const definition<double> sound_speed{"cs", persist::output().restart()};
-  static inline const definition<double> internal_energy{"u", persist::output().restart().initial_required(persist::at_least(0, "internal energies"))};  ///< specific
-  static inline const definition<double> internal_energy_half{"u_half"};
   static inline const definition<double> internal_energy_rate{"du_dt", persist::output().restart()};  ///< eq. (1.8)
-  static inline const definition<double> omega{"omega", persist::restart()};                      ///< grad-h factor (1 for fixed h)
+  // Restart only: what the next step reads of the last force evaluation.
+  /// eq. (1.9)
+  static inline const definition<vector<D>> acceleration{"acceleration", persist::as("ax", "ay", "az").restart()};
+  static inline const definition<double> omega{"omega", persist::restart()};  ///< grad-h factor (1 for fixed h)
   static inline const definition<double> pressure_term{"P_over_omega_rho2", persist::restart()};  ///< P / (Omega rho^2)
-  static inline const definition<double> velocity_divergence{"div_v", persist::restart()};        ///< for the Balsara switch
-  static inline const definition<double> velocity_curl{"curl_v", persist::restart()};             ///< |curl v|, same
-  static inline const definition<double> balsara{"balsara", persist::restart()};                  ///< Balsara factor (1: off)
+  static inline const definition<double> velocity_divergence{"div_v", persist::restart()};  ///< for the Balsara switch
+  static inline const definition<double> velocity_curl{"curl_v", persist::restart()};       ///< |curl v|, same
+  static inline const definition<double> balsara{"balsara", persist::restart()};            ///< Balsara factor (1: off)
+  /// Accumulated (per unit mass) forces and heating the fluid exerted on a wall particle.
+  static inline const definition<vector<D>> boundary_impulse{
+    "boundary_impulse", persist::as("impulse_x", "impulse_y", "impulse_z").restart()};
+  static inline const definition<double> boundary_work{"boundary_work", persist::restart()};
+  // In memory only: recomputed in every step.
+  static inline const definition<vector<D>> velocity_half{"velocity_half"};  ///< v at the half step (leapfrog)
+  static inline const definition<double> internal_energy_half{"u_half"};
   /// Path length since the last distribution, and h then: when to distribute again.
   static inline const definition<double> drift{"drift"};
   static inline const definition<double> distributed_h{"distributed_h"};
-  /// Accumulated (per unit mass) forces and heating the fluid exerted on a wall particle.
-  static inline const definition<vector<D>> boundary_impulse{"boundary_impulse", persist::as("impulse_x", "impulse_y", "impulse_z").restart()};
-  static inline const definition<double> boundary_work{"boundary_work", persist::restart()};
 };
 
 } // namespace flecsph::sph

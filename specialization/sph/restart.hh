@@ -63,7 +63,8 @@ void write_restart_checkpoint(simulation<D>& s, const std::string& path, flecsi_
   state["dimension"] = std::int64_t{D};
   detail::store_totals(s.initial_totals, state);
   flecsi_lite::io::write_checkpoint(path, {s.time, s.step, s.dt}, state, [&](flecsi_lite::io::h5part_writer& out) {
-    flecsi_lite::data::write_fields(*s.particles, out, flecsi_lite::data::role::output | flecsi_lite::data::role::restart);
+    using flecsi_lite::data::role;
+    flecsi_lite::data::write_fields(*s.particles, out, role::output | role::restart);
   });
   s.redistribute_next = true;
 }

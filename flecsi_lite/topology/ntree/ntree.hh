@@ -75,10 +75,13 @@ public:
   // Built-in fields, with their persistence (data/persistence.hh): written to outputs and
   // checkpoints as x y z (zeros beyond D), id, m, h, and read from initial data (id optional:
   // the particle's index in the file). The key does not persist: distribute() recomputes it.
-  static inline const definition<point<D>> position{"position", persist::as("x", "y", "z").padded().output().restart().initial_required(persist::must_be_finite("positions"))};
+  static inline const definition<point<D>> position{"position", persist::as("x", "y", "z").padded().output().restart()
+    .initial_required(persist::must_be_finite("positions"))};
   static inline const definition<std::uint64_t> id{"id", persist::output().restart().initial_optional_index()};  ///< unique
-  static inline const definition<double> mass{"mass", persist::as("m").output().restart().initial_required(persist::must_be_positive("masses"))};
-  static inline const definition<double> smoothing_length{"h", persist::output().restart().initial_required(persist::must_be_positive("smoothing lengths"))};
+  static inline const definition<double> mass{
+    "mass", persist::as("m").output().restart().initial_required(persist::must_be_positive("masses"))};
+  static inline const definition<double> smoothing_length{
+    "h", persist::output().restart().initial_required(persist::must_be_positive("smoothing lengths"))};
   static inline const definition<key_type> key{"key"};  ///< set by distribute()
 
   explicit ntree(const config& settings = config{});
