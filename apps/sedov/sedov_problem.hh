@@ -49,7 +49,6 @@ void create_lattice(sph::simulation<D>& s, const problem& problem) {
   const auto block = flecsi_lite::io::block_slice(total, flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
   set_periodic_box(s, problem);
   sph::create_particles(s, block.count);
-  const sph::initial_views<D> set(*s.particles);
   const double spacing = problem.side / double(problem.per_side);
   const double mass = problem.rho0 * std::pow(spacing, D);
   const double smoothing = s.physics.eta * spacing;
@@ -71,16 +70,16 @@ void create_lattice(sph::simulation<D>& s, const problem& problem) {
                                                 [&](auto kernel) { return kernel.value(std::sqrt(r2), smoothing); });
   };
   for (std::uint64_t i = 0; i < total; ++i) weight_sum += weight(site(i));
-  for (std::size_t i = 0; i < block.count; ++i) {
+  sph::initial_fields(s, [&](std::size_t i, sph::initial_particle<D>& p) {
     const std::uint64_t index = block.offset + i;
-    set.x(i) = site(index);
-    set.id(i) = index;
-    set.m(i) = mass;
-    set.h(i) = smoothing;
-    set.kind(i) = sph::particle_kind::fluid;
-    set.rho(i) = problem.rho0;
-    set.u(i) = u_background + problem.energy * weight(set.x(i)) / (mass * weight_sum);
-  }
+    p.x = site(index);
+    p.id = index;
+    p.m = mass;
+    p.h = smoothing;
+    p.kind = sph::particle_kind::fluid;
+    p.rho = problem.rho0;
+    p.u = u_background + problem.energy * weight(p.x) / (mass * weight_sum);
+  });
 }
 
 /// Mean density in radial shells of width `width` around the centre: sums per shell.

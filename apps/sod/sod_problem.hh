@@ -111,19 +111,18 @@ void create_tube(sph::simulation<D>& s, const problem& problem) {
   const auto block = flecsi_lite::io::block_slice(static_cast<std::uint64_t>(layout.total()),
                                                   flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
   sph::create_particles(s, block.count);
-  const sph::initial_views<D> set(*s.particles);
   const flecsph::physics::ideal_gas gas = s.physics.eos.ideal;
-  for (std::size_t i = 0; i < block.count; ++i) {
+  sph::initial_fields(s, [&](std::size_t i, sph::initial_particle<D>& p) {
     const std::int64_t index = static_cast<std::int64_t>(block.offset + i);
     const tube_particle particle = particle_of(problem, s.physics, layout, index);
-    for (int k = 0; k < D; ++k) set.x(i)[k] = particle.x[k];
-    set.id(i) = static_cast<std::uint64_t>(index);
-    set.m(i) = layout.mass;
-    set.h(i) = particle.h;
-    set.kind(i) = particle.kind;
-    set.rho(i) = particle.rho;
-    set.u(i) = gas.internal_energy(particle.rho, particle.P);
-  }
+    for (int k = 0; k < D; ++k) p.x[k] = particle.x[k];
+    p.id = static_cast<std::uint64_t>(index);
+    p.m = layout.mass;
+    p.h = particle.h;
+    p.kind = particle.kind;
+    p.rho = particle.rho;
+    p.u = gas.internal_energy(particle.rho, particle.P);
+  });
   // velocity, acceleration, du/dt and the boundary accumulators start at zero.
 }
 

@@ -1,10 +1,13 @@
 // Fields: named per-entity values defined once per topology type and stored per instance.
 //
 //   const field<double>::definition<narray> temperature{"temperature"};   // once, at namespace scope
+//   const field<double>::definition<narray> energy{"e", persist::output().restart()};  // persists
 //   execute<step>(temperature(mesh));                                       // a reference to mesh's storage
 //   void step(field<double>::accessor<rw, ro> t);                           // privileges: owned rw, ghost ro
 #pragma once
 
+#include "flecsi_lite/data/field_registry.hh"
+#include "flecsi_lite/data/persistence.hh"
 #include "flecsi_lite/data/privilege.hh"
 #include "flecsi_lite/data/topology_base.hh"
 
@@ -14,15 +17,6 @@
 #include <vector>
 
 namespace flecsi_lite {
-
-namespace data {
-/// Names of the fields defined on topology type Topo; a field's id is its index here.
-template<class Topo>
-std::vector<std::string>& field_names() {
-  static std::vector<std::string> names;
-  return names;
-}
-} // namespace data
 
 /// What a task sees of a field: owned entities [0, owned_size()) and, when the ghost privilege
 /// is not na, ghost entities [owned_size(), size()).
@@ -65,7 +59,7 @@ public:
 
   Topo& topology() const { return *topology_; }
   std::size_t id() const { return id_; }
-  const std::string& name() const { return data::field_names<Topo>()[id_]; }
+  const std::string& name() const { return data::registered_fields<Topo>()[id_].name; }
   data::field_storage<T>& storage() const { return topology_->template storage<T>(id_, name()); }
 
   template<privilege Owned, privilege Ghost>
@@ -86,16 +80,20 @@ struct field {
   template<class Topo>
   using reference = field_reference<T, Topo>;
 
-  /// Declares a field on every instance of topology type Topo.
+  /// Declares a field on every instance of topology type Topo, with its persistence (none:
+  /// the field lives in memory only).
   template<class Topo>
   class definition {
   public:
-    explicit definition(std::string name) : id_(data::field_names<Topo>().size()) {
-      data::field_names<Topo>().push_back(std::move(name));
+    explicit definition(std::string name, data::persistence persistence = {})
+      : id_(data::registered_fields<Topo>().size()) {
+      auto entry = data::make_registered_field<T>(std::move(name), std::move(persistence));
+      data::registered_fields<Topo>().push_back(std::move(entry));
     }
     reference<Topo> operator()(Topo& topology) const { return {topology, id_}; }
     std::size_t id() const { return id_; }
-    const std::string& name() const { return data::field_names<Topo>()[id_]; }
+    const std::string& name() const { return data::registered_fields<Topo>()[id_].name; }
+    const data::persistence& persistence() const { return data::registered_fields<Topo>()[id_].persistence; }
 
   private:
     std::size_t id_;

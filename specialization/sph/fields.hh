@@ -17,6 +17,9 @@ using vector = std::array<double, D>;
 template<int D>
 using particle_tree = flecsi_lite::topology::ntree::ntree<D>;
 
+/// Persistence of fields in files: persist::output().restart().initial_required(rule), ...
+namespace persist = flecsi_lite::persist;
+
 /// FLUID particles follow the equations of motion. WALL particles are fixed boundary particles
 /// (Sod's reflecting ends): they enter every sum as neighbours, their density and pressure are
 /// computed like the fluid's at their fixed h, but they are never moved or heated. The forces the
@@ -24,39 +27,59 @@ using particle_tree = flecsi_lite::topology::ntree::ntree<D>;
 /// fluid plus walls are conserved and can be checked.
 enum class particle_kind : std::int32_t { fluid = 0, wall = 1 };
 
-/// The fields of dimension D, declared once (fields are per topology type, ntree<D>).
+/// The fields of dimension D, declared once (fields are per topology type, ntree<D>), each with
+/// its persistence (flecsi_lite/data/persistence.hh): what the output, the checkpoints and the
+/// initial-data reader hold is exactly what these definitions say. Output and checkpoints hold
+/// x y z, vx vy vz (zeros beyond D), m rho P u h id, kind (int32), cs, du_dt; checkpoints also
+/// what the next step reads besides (accelerations and du/dt of the last force evaluation, grad-h
+/// and pressure terms, the Balsara inputs, the walls' accumulators), so that a restart continues
+/// bitwise. Initial data: x [y z], m, h, u required; vx vy vz, rho, id, kind optional. The rest
+/// (half-step values, the distribution bookkeeping) is recomputed in every step.
 template<int D>
 struct fields {
   template<class T>
-  using definition = typename flecsi_lite::field<T>::template definition<particle_tree<D>>;
+  using definition = typename particle_tree<D>::template definition<T>;
 
-  // The topology's own fields, named here so that tasks read as physics.
+  // The topology's own fields (x y z, id, m, h), named here so that tasks read as physics.
   static const auto& position() { return particle_tree<D>::position; }
   static const auto& id() { return particle_tree<D>::id; }
   static const auto& mass() { return particle_tree<D>::mass; }
   static const auto& smoothing_length() { return particle_tree<D>::smoothing_length; }
 
-  static inline const definition<particle_kind> kind{"kind"};
-  static inline const definition<vector<D>> velocity{"velocity"};             ///< v (predicted during a step)
-  static inline const definition<vector<D>> velocity_half{"velocity_half"};   ///< v at the half step (leapfrog)
-  static inline const definition<vector<D>> acceleration{"acceleration"};     ///< dv/dt, eq. (1.9)
-  static inline const definition<double> density{"rho"};                      ///< eq. (1.3)
-  static inline const definition<double> pressure{"P"};
-  static inline const definition<double> sound_speed{"cs"};
-  static inline const definition<double> internal_energy{"u"};                ///< specific
+  // Output, restart and initial data.
+  static inline const definition<particle_kind> kind{"kind", persist::output().restart().initial_optional(
+    persist::one_of({0, 1}, "0 for fluid or 1 for wall particles"))};
+  /// v (predicted during a step)
+  static inline const definition<vector<D>> velocity{"velocity", persist::as("vx", "vy", "vz").padded().output().restart()
+    .initial_optional(persist::must_be_finite("velocities"))};
+  /// eq. (1.3); read as an initial guess only
+  static inline const definition<double> density{
+    "rho", persist::output().restart().initial_optional(persist::at_least(0, "densities"))};
+  /// specific
+  static inline const definition<double> internal_energy{
+    "u", persist::output().restart().initial_required(persist::at_least(0, "internal energies"))};
+  // Output and restart.
+  static inline const definition<double> pressure{"P", persist::output().restart()};
+  static inline const definition<double> sound_speed{"cs", persist::output().restart()};
+  static inline const definition<double> internal_energy_rate{"du_dt", persist::output().restart()};  ///< eq. (1.8)
+  // Restart only: what the next step reads of the last force evaluation.
+  /// eq. (1.9)
+  static inline const definition<vector<D>> acceleration{"acceleration", persist::as("ax", "ay", "az").restart()};
+  static inline const definition<double> omega{"omega", persist::restart()};  ///< grad-h factor (1 for fixed h)
+  static inline const definition<double> pressure_term{"P_over_omega_rho2", persist::restart()};  ///< P / (Omega rho^2)
+  static inline const definition<double> velocity_divergence{"div_v", persist::restart()};  ///< for the Balsara switch
+  static inline const definition<double> velocity_curl{"curl_v", persist::restart()};       ///< |curl v|, same
+  static inline const definition<double> balsara{"balsara", persist::restart()};            ///< Balsara factor (1: off)
+  /// Accumulated (per unit mass) forces and heating the fluid exerted on a wall particle.
+  static inline const definition<vector<D>> boundary_impulse{
+    "boundary_impulse", persist::as("impulse_x", "impulse_y", "impulse_z").restart()};
+  static inline const definition<double> boundary_work{"boundary_work", persist::restart()};
+  // In memory only: recomputed in every step.
+  static inline const definition<vector<D>> velocity_half{"velocity_half"};  ///< v at the half step (leapfrog)
   static inline const definition<double> internal_energy_half{"u_half"};
-  static inline const definition<double> internal_energy_rate{"du_dt"};       ///< eq. (1.8)
-  static inline const definition<double> omega{"omega"};                      ///< grad-h factor (1 for fixed h)
-  static inline const definition<double> pressure_term{"P_over_omega_rho2"};  ///< P / (Omega rho^2)
-  static inline const definition<double> velocity_divergence{"div_v"};        ///< for the Balsara switch
-  static inline const definition<double> velocity_curl{"curl_v"};             ///< |curl v|, same
-  static inline const definition<double> balsara{"balsara"};                  ///< Balsara factor (1: off)
   /// Path length since the last distribution, and h then: when to distribute again.
   static inline const definition<double> drift{"drift"};
   static inline const definition<double> distributed_h{"distributed_h"};
-  /// Accumulated (per unit mass) forces and heating the fluid exerted on a wall particle.
-  static inline const definition<vector<D>> boundary_impulse{"boundary_impulse"};
-  static inline const definition<double> boundary_work{"boundary_work"};
 };
 
 } // namespace flecsph::sph

@@ -1,8 +1,8 @@
 // Checkpoint and restart of an SPH run: a checkpoint (flecsi_lite/io/checkpoint.hh: one H5Part
-// step, written under a temporary name and renamed) holds the particles as write_particles writes
-// them plus what the next step reads besides (accelerations and du/dt of the last force
-// evaluation, grad-h and pressure terms, the walls' accumulators) and the run's clock and initial
-// totals. A run restarted from it takes the same steps as the run that wrote it, bitwise:
+// step, written under a temporary name and renamed) holds every field whose definition has role
+// output or restart (sph/fields.hh: the output's arrays plus what the next step reads besides)
+// and the run's clock and initial totals; a restart reads back every field with role restart.
+// A run restarted from it takes the same steps as the run that wrote it, bitwise:
 //   - the next step starts from the same fields (no recomputation of the forces at a restart:
 //     they were computed with the predicted velocities of the step, not the stored ones);
 //   - the particles are distributed again at the step after every checkpoint, in the writing run
@@ -13,31 +13,15 @@
 #include "specialization/sph/particle_input.hh"
 #include "specialization/sph/particle_output.hh"
 
+#include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"
 
+#include <cstdint>
 #include <string>
-#include <vector>
 
 namespace flecsph::sph {
 
 namespace detail {
-/// Calls visit(name, reference, component) for every array a restart needs besides the output's:
-/// D-vectors component by component ("ax", "ay", ...), scalars with component -1.
-template<int D, class Visit>
-void for_each_restart_array(particle_tree<D>& p, Visit&& visit) {
-  using f = fields<D>;
-  static const char* const acceleration[3] = {"ax", "ay", "az"};
-  static const char* const impulse[3] = {"impulse_x", "impulse_y", "impulse_z"};
-  for (int k = 0; k < D; ++k) visit(acceleration[k], f::acceleration(p), k);
-  for (int k = 0; k < D; ++k) visit(impulse[k], f::boundary_impulse(p), k);
-  visit("boundary_work", f::boundary_work(p), -1);
-  visit("omega", f::omega(p), -1);
-  visit("P_over_omega_rho2", f::pressure_term(p), -1);
-  visit("balsara", f::balsara(p), -1);
-  visit("div_v", f::velocity_divergence(p), -1);
-  visit("curl_v", f::velocity_curl(p), -1);
-}
-
 /// The initial totals as run-state entries "initial_<quantity>", and back.
 template<int D>
 void store_totals(const conserved_totals<D>& t, flecsi_lite::io::run_state& state) {
@@ -78,19 +62,9 @@ template<int D>
 void write_restart_checkpoint(simulation<D>& s, const std::string& path, flecsi_lite::io::run_state state) {
   state["dimension"] = std::int64_t{D};
   detail::store_totals(s.initial_totals, state);
-  auto& p = *s.particles;
   flecsi_lite::io::write_checkpoint(path, {s.time, s.step, s.dt}, state, [&](flecsi_lite::io::h5part_writer& out) {
-    write_particle_arrays(out, s);
-    const std::size_t n = p.owned_size();
-    std::vector<double> buffer(n);
-    detail::for_each_restart_array(p, [&](const char* name, const auto& reference, int component) {
-      const auto view = flecsi_lite::host_view(reference);
-      for (std::size_t i = 0; i < n; ++i) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(view(i))>, double>) buffer[i] = view(i);
-        else buffer[i] = view(i)[component];
-      }
-      out.write(name, buffer.data(), n);
-    });
+    using flecsi_lite::data::role;
+    flecsi_lite::data::write_fields(*s.particles, out, role::output | role::restart);
   });
   s.redistribute_next = true;
 }
@@ -113,25 +87,8 @@ flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::
       throw flecsi_lite::io::layout_error("checkpoint '" + path + "' was written with " + name + " = " + written +
                                           ", this run has " + name + " = " + flecsi_lite::io::to_string(value));
   }
-  read_particles(s, in, 0);
-  auto& p = *s.particles;
-  detail::for_each_restart_array(p, [&](const char* name, const auto& reference, int component) {
-    const auto values = in.read<double>(0, name);
-    auto view = flecsi_lite::host_view(reference);
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      if constexpr (std::is_same_v<std::decay_t<decltype(view(i))>, double>) view(i) = values[i];
-      else view(i)[component] = values[i];
-    }
-  });
-  using f = fields<D>;
-  const auto restore = [&](const char* name, const auto& reference) {
-    const auto values = in.read<double>(0, name);
-    auto view = flecsi_lite::host_view(reference);
-    for (std::size_t i = 0; i < values.size(); ++i) view(i) = values[i];
-  };
-  restore("P", f::pressure(p));
-  restore("cs", f::sound_speed(p));
-  restore("du_dt", f::internal_energy_rate(p));
+  create_particles_for(s, in, 0);
+  flecsi_lite::data::read_fields(*s.particles, in, 0, flecsi_lite::data::role::restart);
   s.time = contents.info.time;
   s.step = contents.info.step;
   s.dt = contents.info.dt;

@@ -69,12 +69,20 @@ public:
   using config = ntree_config<D>;
   using point_type = point<D>;
 
-  // Built-in fields.
-  static inline const typename field<point<D>>::template definition<ntree> position{"position"};
-  static inline const typename field<std::uint64_t>::template definition<ntree> id{"id"};  ///< unique
-  static inline const typename field<double>::template definition<ntree> mass{"mass"};
-  static inline const typename field<double>::template definition<ntree> smoothing_length{"h"};
-  static inline const typename field<key_type>::template definition<ntree> key{"key"};  ///< set by distribute()
+  template<class T>
+  using definition = typename field<T>::template definition<ntree>;
+
+  // Built-in fields, with their persistence (data/persistence.hh): written to outputs and
+  // checkpoints as x y z (zeros beyond D), id, m, h, and read from initial data (id optional:
+  // the particle's index in the file). The key does not persist: distribute() recomputes it.
+  static inline const definition<point<D>> position{"position", persist::as("x", "y", "z").padded().output().restart()
+    .initial_required(persist::must_be_finite("positions"))};
+  static inline const definition<std::uint64_t> id{"id", persist::output().restart().initial_optional_index()};  ///< unique
+  static inline const definition<double> mass{
+    "mass", persist::as("m").output().restart().initial_required(persist::must_be_positive("masses"))};
+  static inline const definition<double> smoothing_length{
+    "h", persist::output().restart().initial_required(persist::must_be_positive("smoothing lengths"))};
+  static inline const definition<key_type> key{"key"};  ///< set by distribute()
 
   explicit ntree(const config& settings = config{});
   /// Collective: a tree with `local_count` owned particles here (fields zero).

@@ -57,16 +57,15 @@ struct tube_run : sph::simulation<1> {};
 void load_tube(tube_run& s) {
   const int fluid = 60, walls = 8, total = fluid + 2 * walls;
   sph::create_particles(s, total);
-  const sph::initial_views<1> set(*s.particles);
   const double spacing = 1.0 / fluid;
-  for (int i = 0; i < total; ++i) {
-    set.x(i) = {(i - walls + 0.5) * spacing};
-    set.id(i) = i;
-    set.m(i) = spacing;
-    set.h(i) = s.physics.eta * spacing;
-    set.u(i) = set.x(i)[0] < 0.5 ? 2.5 : 0.5;
-    set.kind(i) = (i < walls || i >= walls + fluid) ? sph::particle_kind::wall : sph::particle_kind::fluid;
-  }
+  sph::initial_fields(s, [&](std::size_t i, sph::initial_particle<1>& p) {
+    p.x = {(double(i) - walls + 0.5) * spacing};
+    p.id = i;
+    p.m = spacing;
+    p.h = s.physics.eta * spacing;
+    p.u = p.x[0] < 0.5 ? 2.5 : 0.5;
+    p.kind = (int(i) < walls || int(i) >= walls + fluid) ? sph::particle_kind::wall : sph::particle_kind::fluid;
+  });
 }
 } // namespace
 

@@ -49,21 +49,20 @@ void load_lattice(sph::simulation<D>& s, const lattice& shape) {
     s.tree_settings.periodic.fill(true);
   }
   sph::create_particles(s, flecsi_lite::runtime::rank() == 0 ? count : 0);
-  const sph::initial_views<D> set(*s.particles);
-  for (std::size_t i = 0; i < s.particles->owned_size(); ++i) {
+  sph::initial_fields(s, [&](std::size_t i, sph::initial_particle<D>& p) {
     std::size_t rest = i;
     for (int k = 0; k < D; ++k) {
       const double cell = double(rest % shape.per_side);
       rest /= shape.per_side;
-      set.x(i)[k] = (cell + 0.5 + shape.jitter * hashed_unit(i, 1 + k)) * spacing;
-      set.v(i)[k] = shape.velocity * hashed_unit(i, 11 + k);
+      p.x[k] = (cell + 0.5 + shape.jitter * hashed_unit(i, 1 + k)) * spacing;
+      p.v[k] = shape.velocity * hashed_unit(i, 11 + k);
     }
-    set.id(i) = 1000 + 7 * i;  // ids need not be contiguous
-    set.m(i) = mass;
-    set.h(i) = s.physics.eta * spacing;
-    set.u(i) = shape.u0 * (1.0 + shape.energy_spread * hashed_unit(i, 21));
-    set.kind(i) = sph::particle_kind::fluid;
-  }
+    p.id = 1000 + 7 * i;  // ids need not be contiguous
+    p.m = mass;
+    p.h = s.physics.eta * spacing;
+    p.u = shape.u0 * (1.0 + shape.energy_spread * hashed_unit(i, 21));
+    p.kind = sph::particle_kind::fluid;
+  });
 }
 
 /// The shortest image of x_a - x_b (periodic unit box) or the plain difference.
