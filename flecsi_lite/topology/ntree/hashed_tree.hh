@@ -89,7 +89,7 @@ public:
     x_ = x;
     m_ = m;
     h_ = h;
-    quadrupoles_.assign(options_.quadrupole ? nodes_.size() : 0, quadrupole<D>{});
+    quadrupoles_.assign(options_.quadrupole ? nodes_.size() : 0, quadrupole<D>::Zero());
     search_nodes_.resize(nodes_.size());
     // Levels of few nodes are done in place: a parallel loop costs a fork and a join, which on
     // a loaded machine can wait for a thread that is not running.
@@ -232,19 +232,18 @@ private:
     compact.child_count = node.child_count;
     if (quadrupoles_.empty()) return;
 
+    // The moments about the centre of mass: offsets of the particles (leaf) or of the children's
+    // centres (parallel-axis shift), positions viewed as Eigen vectors in place.
     quadrupole<D>& q = quadrupoles_[index];
-    q.fill(0);
-    const auto offset = [&node](const point<D>& y) {
-      point<D> d;
-      for (int k = 0; k < D; ++k) d[k] = y[k] - node.center[k];
-      return d;
-    };
+    q.setZero();
+    const auto center = as_column_vector<D>(node.center);
     if (node.is_leaf()) {
       for (std::uint32_t b = node.begin; b < node.end; ++b)
-        add_point_mass<D>(q, m_[b], offset(x_[b]));
+        add_point_mass<D>(q, m_[b], as_column_vector<D>(x_[b]) - center);
     } else {
       for (std::uint32_t c = node.first_child; c < node.first_child + node.child_count; ++c)
-        add_shifted<D>(q, quadrupoles_[c], nodes_[c].mass, offset(nodes_[c].center));
+        add_shifted<D>(q, quadrupoles_[c], nodes_[c].mass,
+                       as_column_vector<D>(nodes_[c].center) - center);
     }
   }
 

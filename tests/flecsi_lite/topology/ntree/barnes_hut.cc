@@ -1,6 +1,7 @@
-// Tests of the Barnes-Hut walk: accepted nodes and particles partition the sources, theta = 0
-// gives the direct sum exactly, and the monopole + quadrupole force converges to the direct sum
-// as theta shrinks, the quadrupole beating the monopole alone.
+// Tests of the Barnes-Hut walk and the multipole field: accepted nodes and particles partition
+// the sources, theta = 0 gives the direct sum exactly, the monopole + quadrupole force converges
+// to the direct sum as theta shrinks (the quadrupole beating the monopole alone), and the
+// acceleration is minus the gradient of the potential.
 #include "flecsi_lite/topology/ntree/barnes_hut.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"
 
@@ -8,12 +9,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace nt = flecsi_lite::topology::ntree;
 using namespace ntree_test;
 
 namespace {
+
+using vector3 = nt::column_vector<3>;
 
 struct fixture {
   particle_set<3> set;
@@ -27,34 +31,29 @@ struct fixture {
 };
 
 // Direct-sum acceleration on particle a (G = 1, no softening), in ascending source order.
-nt::point<3> direct(const particle_set<3>& set, std::size_t a,
-                    const std::vector<std::uint32_t>& sources) {
-  nt::point<3> acceleration{};
+vector3 direct(const particle_set<3>& set, std::size_t a,
+               const std::vector<std::uint32_t>& sources) {
+  vector3 acceleration = vector3::Zero();
   for (const std::uint32_t b : sources) {
     if (b == a) continue;
-    nt::point<3> d;
-    for (int k = 0; k < 3; ++k) d[k] = set.x[b][k] - set.x[a][k];
-    const double r2 = nt::distance_squared<3>(set.x[a], set.x[b]);
-    const double inverse_r3 = 1 / (r2 * std::sqrt(r2));
-    for (int k = 0; k < 3; ++k) acceleration[k] += set.m[b] * d[k] * inverse_r3;
+    const vector3 d = nt::as_column_vector<3>(set.x[b]) - nt::as_column_vector<3>(set.x[a]);
+    const double r2 = d.squaredNorm();
+    acceleration += set.m[b] / (r2 * std::sqrt(r2)) * d;
   }
   return acceleration;
 }
 
-nt::point<3> tree_acceleration(const fixture& f, std::size_t a, const nt::interaction_list& list,
-                               bool quadrupole) {
-  nt::point<3> acceleration = direct(f.set, a, list.particles);
-  const nt::quadrupole<3> none{};
+vector3 tree_acceleration(const fixture& f, std::size_t a, const nt::interaction_list& list,
+                          bool quadrupole) {
+  vector3 acceleration = direct(f.set, a, list.particles);
+  const nt::quadrupole<3> none = nt::quadrupole<3>::Zero();
   for (const std::uint32_t i : list.nodes) {
     const auto& node = f.tree.node(i);
-    const auto field = nt::multipole_acceleration<3>(
-      node.mass, node.center, quadrupole ? f.tree.node_quadrupole(i) : none, f.set.x[a]);
-    for (int k = 0; k < 3; ++k) acceleration[k] += field[k];
+    acceleration += nt::as_column_vector<3>(nt::multipole_acceleration<3>(
+      node.mass, node.center, quadrupole ? f.tree.node_quadrupole(i) : none, f.set.x[a]));
   }
   return acceleration;
 }
-
-double norm(const nt::point<3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 // RMS over particles of |a_tree - a_direct| / |a_direct|.
 double rms_error(const fixture& f, double theta, bool quadrupole) {
@@ -65,11 +64,9 @@ double rms_error(const fixture& f, double theta, bool quadrupole) {
   std::size_t count = 0;
   for (std::size_t a = 0; a < f.set.size(); a += 4) {
     nt::barnes_hut_walk<3>(f.tree, f.set.x[a], theta, list);
-    const auto exact = direct(f.set, a, all);
-    const auto approximate = tree_acceleration(f, a, list, quadrupole);
-    nt::point<3> error;
-    for (int k = 0; k < 3; ++k) error[k] = approximate[k] - exact[k];
-    const double relative = norm(error) / norm(exact);
+    const vector3 exact = direct(f.set, a, all);
+    const double relative = (tree_acceleration(f, a, list, quadrupole) - exact).norm() /
+                            exact.norm();
     sum += relative * relative;
     ++count;
   }
@@ -155,9 +152,9 @@ TEST_CASE("monopole + quadrupole force converges to the direct sum", "[ntree][ba
 TEST_CASE("multipole field of two masses matches its expansion", "[ntree][barnes_hut]") {
   // Masses m at +-d on z, seen from z on the axis: a_z = -2m/z^2 - 6 m d^2 / z^4 + O(d^4/z^6).
   const double m = 0.5, d = 0.01, z = 1.0;
-  nt::quadrupole<3> q{};
-  nt::add_point_mass<3>(q, m, {0, 0, d});
-  nt::add_point_mass<3>(q, m, {0, 0, -d});
+  nt::quadrupole<3> q = nt::quadrupole<3>::Zero();
+  nt::add_point_mass<3>(q, m, vector3(0, 0, d));
+  nt::add_point_mass<3>(q, m, vector3(0, 0, -d));
   const auto a = nt::multipole_acceleration<3>(2 * m, {0, 0, 0}, q, {0, 0, z});
   REQUIRE(a[0] == 0);
   REQUIRE(a[1] == 0);
@@ -165,4 +162,47 @@ TEST_CASE("multipole field of two masses matches its expansion", "[ntree][barnes
   REQUIRE(std::abs(a[2] - exact) < 20 * m * std::pow(d / z, 4));
   REQUIRE(nt::multipole_potential<3>(2 * m, {0, 0, 0}, q, {0, 0, z}) ==
           Approx(-m / (z - d) - m / (z + d)).epsilon(1e-7));
+}
+
+TEST_CASE("multipole acceleration is minus the gradient of its potential", "[ntree][barnes_hut]") {
+  // A lopsided cluster (no symmetry to hide a wrong term) seen from points at a few radii.
+  std::mt19937_64 random(43);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  double mass = 0;
+  vector3 weighted = vector3::Zero();
+  std::vector<std::pair<double, vector3>> masses;
+  for (int b = 0; b < 20; ++b) {
+    const vector3 x(0.3 * unit(random), 0.1 * unit(random), 0.05 * unit(random) + 0.02 * b / 20.0);
+    const double m = 1 + 0.5 * unit(random);
+    masses.emplace_back(m, x);
+    mass += m;
+    weighted += m * x;
+  }
+  const vector3 center_of_mass = weighted / mass;
+  nt::quadrupole<3> q = nt::quadrupole<3>::Zero();
+  for (const auto& [m, x] : masses) nt::add_point_mass<3>(q, m, x - center_of_mass);
+  REQUIRE(q == q.transpose());                               // exactly symmetric
+  REQUIRE(std::abs(q.trace()) <= 1e-14 * q.cwiseAbs().maxCoeff()); // traceless in 3D
+  REQUIRE(q.cwiseAbs().maxCoeff() > 0.01 * mass * 0.3 * 0.3);      // and not zero
+
+  nt::point<3> center;
+  nt::as_column_vector<3>(center) = center_of_mass;
+  const double step = 1e-5;
+  for (int trial = 0; trial < 20; ++trial) {
+    const vector3 direction = vector3(unit(random), unit(random), unit(random)).normalized();
+    nt::point<3> x;
+    nt::as_column_vector<3>(x) = center_of_mass + (1.5 + trial * 0.25) * direction;
+    const auto acceleration = nt::multipole_acceleration<3>(mass, center, q, x);
+    for (int k = 0; k < 3; ++k) {
+      nt::point<3> forward = x, backward = x;
+      forward[k] += step;
+      backward[k] -= step;
+      const double gradient = (nt::multipole_potential<3>(mass, center, q, forward) -
+                               nt::multipole_potential<3>(mass, center, q, backward)) /
+                              (2 * step);
+      // Central differences: error ~ step^2 |phi'''| plus rounding ~ 1e-16 |phi| / step.
+      REQUIRE(std::abs(acceleration[k] + gradient) <=
+              1e-8 * nt::as_column_vector<3>(acceleration).norm());
+    }
+  }
 }

@@ -1,6 +1,7 @@
 // Tests of the hashed tree: node ranges partition the particles along the key hierarchy, leaves
 // respect the bucket, hash lookups find every node, and the bottom-up moments (mass, centre,
-// bounds, largest h, quadrupole) equal direct sums over each node's particles.
+// bounds, largest h, quadrupole) equal direct sums over each node's particles; the quadrupole,
+// combined by parallel-axis shifts, is exactly symmetric with the trace of a traceless 3D tensor.
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"
 
@@ -92,17 +93,24 @@ void check_moments(const nt::hashed_tree<D>& tree, const ntree_test::particle_se
     for (int k = 0; k < D; ++k) REQUIRE(std::abs(node.center[k] - center[k]) <= 1e-13 * scale);
 
     if (!tree.has_quadrupoles()) continue;
-    nt::quadrupole<D> q{};
+    // The direct sum about the node's centre of mass, and the moment of inertia sum m |d|^2.
+    nt::quadrupole<D> q = nt::quadrupole<D>::Zero();
+    double inertia = 0;
     for (std::uint32_t b = node.begin; b < node.end; ++b) {
-      nt::point<D> d;
-      for (int k = 0; k < D; ++k) d[k] = set.x[b][k] - center[k];
+      const nt::column_vector<D> d =
+        nt::as_column_vector<D>(set.x[b]) - nt::as_column_vector<D>(center);
       nt::add_point_mass<D>(q, set.m[b], d);
+      inertia += set.m[b] * d.squaredNorm();
     }
     // Scale of the quadrupole: mass times the squared size of the node.
     const double size = node.bounds.max_extent();
     const double q_scale = mass * size * size + 1e-300;
-    for (std::size_t k = 0; k < q.size(); ++k)
-      REQUIRE(std::abs(tree.node_quadrupole(i)[k] - q[k]) <= 1e-11 * q_scale);
+    const nt::quadrupole<D>& tree_q = tree.node_quadrupole(i);
+    REQUIRE((tree_q - q).cwiseAbs().maxCoeff() <= 1e-11 * q_scale);
+    // Exactly symmetric, and the D x D block of a traceless 3D tensor: trace (3 - D) sum m |d|^2,
+    // to rounding of the inertia itself where the node has no extent (one particle, coincident).
+    REQUIRE(tree_q == tree_q.transpose());
+    REQUIRE(std::abs(tree_q.trace() - (3 - D) * inertia) <= 1e-11 * q_scale + 1e-12 * inertia);
   }
 }
 
