@@ -95,7 +95,7 @@ conserved_sums<D> conserved_quantities(ro<vector<D>> x, ro<vector<D>> v,
                                        ro<double> work) {
   // Chunks in parallel, each with its own accumulator; exact sums make the result order-free.
   const std::size_t n = x.size();
-  const std::size_t threads = static_cast<std::size_t>(Kokkos::DefaultHostExecutionSpace().concurrency());
+  const std::size_t threads = static_cast<std::size_t>(flecsi_lite::concurrency());
   const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(n, 4 * threads));
   std::vector<conserved_sums<D>> partial(chunks);
   flecsi_lite::forall(chunks, [&](std::size_t c) {

@@ -59,7 +59,7 @@ double compute_density(const neighbourhood<D>& neighbours, physics_settings sett
   double worst = 0;
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
     using Kernel = decltype(kernel);
-    for_each_target(
+    flecsi_lite::forall_reduce(
       n,
       [&](std::size_t a, double& local_worst) {
         const double h_start = h(a), h_limit = half_reach * h_start;
@@ -78,7 +78,7 @@ double compute_density(const neighbourhood<D>& neighbours, physics_settings sett
         omega(a) = adapt ? physics::grad_h_omega<D>(h_a, rho_a, drho_dh) : 1.0;
         local_worst = std::max(local_worst, h_a / h_limit);
       },
-      Kokkos::Max<double>(worst), "sph::compute_density");
+      Kokkos::Max<double>(worst), "sph::compute_density", target_schedule);
   });
   return std::max(worst, 0.0);  // no owned particle: the reduction's identity is -inf
 }

@@ -96,7 +96,7 @@ double compute_forces(const neighbourhood<D>& neighbours, physics_settings setti
   double smallest = std::numeric_limits<double>::max();
   const auto loop = [&](auto kernel_type, auto with_conductivity) {
     using Kernel = decltype(kernel_type);
-    for_each_target(
+    flecsi_lite::forall_reduce(
       neighbours.size(),
       [&](std::size_t a, double& local_smallest) {
         vector<D> dv_dt;
@@ -113,7 +113,7 @@ double compute_forces(const neighbourhood<D>& neighbours, physics_settings setti
         if (a2 > 0) dt = std::min(dt, settings.acceleration_factor * std::sqrt(h_a / std::sqrt(a2)));
         local_smallest = std::min(local_smallest, dt);
       },
-      Kokkos::Min<double>(smallest), "sph::compute_forces");
+      Kokkos::Min<double>(smallest), "sph::compute_forces", target_schedule);
   };
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel_type) {
     if (settings.conductivity > 0) loop(kernel_type, std::true_type{});

@@ -3,6 +3,7 @@
 // ghosts and the local tree.
 #pragma once
 
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/runtime/timers.hh"
 #include "flecsi_lite/topology/ntree/distributed/branch_sharing.hh"
 #include "flecsi_lite/topology/ntree/distributed/ghost_exchange.hh"
@@ -151,7 +152,8 @@ distribution_stats ntree<D>::distribute() {
     const std::uint64_t* ids = values<std::uint64_t>(id).view().data();
     sort_permutation(keys, ids, n, order);
     std::vector<key_id> sorted(n);
-    host_for("ntree::distribute::sorted", n, [&](std::size_t i) { sorted[i] = {keys[order[i]], ids[order[i]]}; });
+    flecsi_lite::forall(
+      n, [&](std::size_t i) { sorted[i] = {keys[order[i]], ids[order[i]]}; }, "ntree::distribute::sorted");
     std::vector<double> weights;
     if (config_.balancing == balance::work) {
       const double* w = values<double>(*config_.work_weight).view().data();
