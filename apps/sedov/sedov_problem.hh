@@ -98,7 +98,7 @@ struct shell_reduction {
 };
 
 template<int D>
-shell_sums radial_density(double width, sph::accessor<sph::vector<D>, sph::ro> x, sph::accessor<double, sph::ro> rho) {
+shell_sums radial_density(double width, sph::ro<sph::vector<D>> x, sph::ro<double> rho) {
   shell_sums sums;
   for (std::size_t a = 0; a < x.size(); ++a) {
     double r2 = 0;

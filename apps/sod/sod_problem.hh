@@ -144,9 +144,9 @@ struct l1_reduction {
 
 template<int D>
 l1_sums l1_error_sums(const flecsph::analytic::riemann_solution& exact, double time, double x0, double window,
-                      sph::accessor<sph::vector<D>, sph::ro> x, sph::accessor<sph::vector<D>, sph::ro> v,
-                      sph::accessor<double, sph::ro> rho, sph::accessor<double, sph::ro> P,
-                      sph::accessor<sph::particle_kind, sph::ro> kind) {
+                      sph::ro<sph::vector<D>> x, sph::ro<sph::vector<D>> v,
+                      sph::ro<double> rho, sph::ro<double> P,
+                      sph::ro<sph::particle_kind> kind) {
   l1_sums sums;
   for (std::size_t a = 0; a < x.size(); ++a) {
     if (kind(a) != sph::particle_kind::fluid || !(std::fabs(x(a)[0] - x0) < window)) continue;

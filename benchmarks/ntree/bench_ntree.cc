@@ -165,7 +165,7 @@ void search_rows(const std::string& kind, std::size_t n, double neighbours, int 
       }));
   std::vector<double> rho_from_lists(n);
   row("density from CSR lists (reuse cost)", best_time(repeats, [&] {
-        nt::host_for("bench::csr_density", n, [&](std::size_t a) {
+        flecsi_lite::forall(n, [&](std::size_t a) {
           double total = 0;
           for (std::size_t j = lists.offsets[a]; j < lists.offsets[a + 1]; ++j) {
             const std::size_t b = lists.neighbours[j];
@@ -174,7 +174,7 @@ void search_rows(const std::string& kind, std::size_t n, double neighbours, int 
             total += set.m[b] * q * q * q;
           }
           rho_from_lists[a] = total;
-        });
+        }, "bench::csr_density");
       }));
   nt::radius_search<3> per_target(options);
   row("per-target tree walk, callback", best_time(repeats, [&] {
@@ -191,8 +191,9 @@ void search_rows(const std::string& kind, std::size_t n, double neighbours, int 
   });
   const double cell_search = best_time(repeats, [&] {
     std::fill(rho.begin(), rho.end(), 0.0);
-    nt::host_for_dynamic("bench::cell_list", n,
-                         [&](std::size_t a) { cells.for_each_neighbour(a, options, sum); });
+    flecsi_lite::forall(
+      n, [&](std::size_t a) { cells.for_each_neighbour(a, options, sum); }, "bench::cell_list",
+      flecsi_lite::dynamic_schedule{});
   });
   row("uniform cell list (build, serial)", cell_build);
   row("uniform cell list, callback", cell_search);
@@ -231,8 +232,8 @@ int main(int argc, char** argv) {
   }
   if (!sections[0] && !sections[1] && !sections[2]) sections[0] = sections[1] = sections[2] = true;
   const int repeats = quick ? 1 : 3;
-  std::printf("ntree benchmark, 3D, %d host threads (%s)\n", nt::host_concurrency(),
-              typeid(nt::host_space).name());
+  std::printf("ntree benchmark, 3D, %d host threads (%s)\n", flecsi_lite::concurrency(),
+              typeid(flecsi_lite::execution_space).name());
 
   if (sections[0]) {
   std::printf("\nBuild: ns per particle (keys in a box, radix sort of (key, id), permutation of "

@@ -47,8 +47,8 @@ runtime::parameters load_parameters(const std::string& path, const std::vector<s
 }
 
 /// Owned particles with r_ab < 2 h_a (the kernel's neighbours, itself included).
-double kernel_neighbours(const sph::neighbourhood<D>& neighbours, sph::accessor<sph::vector<D>, sph::ro, sph::ro> x,
-                         sph::accessor<double, sph::ro> h) {
+double kernel_neighbours(const sph::neighbourhood<D>& neighbours, sph::ro_with_ghosts<sph::vector<D>> x,
+                         sph::ro<double> h) {
   const sph::neighbour_walk<D> walk(neighbours);
   double count = 0;
   for (std::size_t a = 0; a < neighbours.size(); ++a) {

@@ -16,7 +16,7 @@ std::size_t model_structure::find_point(const std::string& name) const {
 std::size_t model_structure::add_point(const std::string& name, std::size_t cycle) {
   for (auto& p : points_)
     if (p.name == name) throw control_error("control point '" + name + "' declared twice");
-  points_.push_back({name, {}, cycle});
+  points_.push_back({name, {}, cycle, {}});
   return points_.size() - 1;
 }
 
@@ -33,8 +33,64 @@ action_handle model_structure::add_action(const std::string& point, const std::s
   for (auto& a : points_[p].actions)
     if (a.name == name)
       throw control_error("action '" + name + "' registered twice on control point '" + point + "'");
-  points_[p].actions.push_back({name, {}});
+  points_[p].actions.push_back({name, {}, {}});
+  points_[p].sequence.push_back(points_[p].actions.size() - 1);
   return {p, points_[p].actions.size() - 1};
+}
+
+action_handle model_structure::find_action(const std::string& point, const std::string& name) const {
+  const std::size_t p = find_point(point);
+  const auto& actions = points_[p].actions;
+  for (std::size_t a = 0; a < actions.size(); ++a)
+    if (actions[a].name == name) return {p, a};
+  std::string known;
+  for (auto& a : actions) known += (known.empty() ? "" : ", ") + a.name;
+  throw control_error("no action '" + name + "' on control point '" + point + "' (its actions: " +
+                      (known.empty() ? "none" : known) + ")");
+}
+
+namespace {
+/// Moves `action` in `sequence` to just before (offset 0) or just after (offset 1) `anchor`.
+void move_next_to(std::vector<std::size_t>& sequence, std::size_t action, std::size_t anchor, std::size_t offset) {
+  sequence.erase(std::find(sequence.begin(), sequence.end(), action));
+  const auto at = std::find(sequence.begin(), sequence.end(), anchor);
+  sequence.insert(at + static_cast<std::ptrdiff_t>(offset), action);
+}
+} // namespace
+
+void model_structure::place_after(action_handle action, const std::string& anchor_name) {
+  auto& point = points_[action.point];
+  const action_handle anchor = find_action(point.name, anchor_name);
+  auto& placed = point.actions[action.index];
+  if (!placed.placement.empty())
+    throw control_error("action '" + placed.name + "' (" + point.name + ") is already placed " + placed.placement);
+  if (anchor.index == action.index)
+    throw control_error("action '" + placed.name + "' (" + point.name + ") cannot be placed relative to itself");
+  // The anchor's dependents now wait on the new action, which waits on the anchor.
+  for (std::size_t a = 0; a < point.actions.size(); ++a) {
+    if (a == action.index) continue;
+    for (std::size_t& earlier : point.actions[a].after)
+      if (earlier == anchor.index) earlier = action.index;
+  }
+  placed.after.push_back(anchor.index);
+  placed.placement = "after " + anchor_name;
+  move_next_to(point.sequence, action.index, anchor.index, 1);
+}
+
+void model_structure::place_before(action_handle action, const std::string& anchor_name) {
+  auto& point = points_[action.point];
+  const action_handle anchor = find_action(point.name, anchor_name);
+  auto& placed = point.actions[action.index];
+  if (!placed.placement.empty())
+    throw control_error("action '" + placed.name + "' (" + point.name + ") is already placed " + placed.placement);
+  if (anchor.index == action.index)
+    throw control_error("action '" + placed.name + "' (" + point.name + ") cannot be placed relative to itself");
+  // The new action inherits what the anchor waited on, and the anchor waits on it alone.
+  auto& waited = point.actions[anchor.index].after;
+  for (std::size_t earlier : waited) placed.after.push_back(earlier);
+  waited.assign(1, action.index);
+  placed.placement = "before " + anchor_name;
+  move_next_to(point.sequence, action.index, anchor.index, 0);
 }
 
 void model_structure::add_dependency(action_handle later, action_handle earlier) {
@@ -47,8 +103,10 @@ void model_structure::add_dependency(action_handle later, action_handle earlier)
 }
 
 std::vector<std::size_t> model_structure::order(std::size_t point) const {
-  // Kahn's algorithm, always taking the earliest-registered ready action.
+  // Kahn's algorithm, always taking the ready action earliest in the point's sequence
+  // (registration order with placed actions next to their anchors).
   const auto& actions = points_[point].actions;
+  const auto& sequence = points_[point].sequence;
   const std::size_t n = actions.size();
   std::vector<std::size_t> waiting_on(n, 0);
   std::vector<std::vector<std::size_t>> successors(n);
@@ -61,8 +119,8 @@ std::vector<std::size_t> model_structure::order(std::size_t point) const {
   std::vector<bool> done(n, false);
   while (result.size() < n) {
     std::size_t next = n;
-    for (std::size_t a = 0; a < n && next == n; ++a)
-      if (!done[a] && waiting_on[a] == 0) next = a;
+    for (std::size_t k = 0; k < n && next == n; ++k)
+      if (!done[sequence[k]] && waiting_on[sequence[k]] == 0) next = sequence[k];
     if (next == n) {
       // Every remaining action waits on another: follow "waits on" links to exhibit a cycle.
       std::size_t a = 0;
@@ -112,8 +170,14 @@ void model_structure::write_graphviz(std::ostream& out, const std::string& title
     }
     out << "  subgraph cluster_point_" << p << " {\n    label=\"" << point.name << "\";\n    style=filled;"
         << " fillcolor=\"#eef3fb\";\n    p" << p << " [shape=point, style=invis];\n";
-    for (std::size_t a = 0; a < point.actions.size(); ++a)
-      out << "    p" << p << "a" << a << " [label=\"" << point.actions[a].name << "\"];\n";
+    // Placed actions (what an app inserted into someone else's point) stand out.
+    for (std::size_t a = 0; a < point.actions.size(); ++a) {
+      out << "    p" << p << "a" << a << " [label=\"" << point.actions[a].name << "\"";
+      if (!point.actions[a].placement.empty())
+        out << ", style=\"rounded,filled\", fillcolor=\"#fdd9a8\", tooltip=\"placed " << point.actions[a].placement
+            << "\"";
+      out << "];\n";
+    }
     for (std::size_t a = 0; a < point.actions.size(); ++a)
       for (std::size_t b : point.actions[a].after) out << "    p" << p << "a" << b << " -> p" << p << "a" << a << ";\n";
     out << "  }\n";

@@ -29,7 +29,7 @@ struct control_error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Identifies an action: its control point and its index there.
+/// Identifies an action: its control point and its index (registration order) there.
 struct action_handle {
   std::size_t point;
   std::size_t index;
@@ -42,11 +42,15 @@ public:
   struct action_info {
     std::string name;
     std::vector<std::size_t> after;  // indices of actions of the same point
+    std::string placement;           // "after forces", "before kick", or empty when not placed
   };
   struct point_info {
     std::string name;
     std::vector<action_info> actions;
     std::size_t cycle = npos;  // index into cycles_, or npos
+    /// Tie-break order of the topological sort: registration order, except that a placed action
+    /// sits next to its anchor, so that it runs exactly there.
+    std::vector<std::size_t> sequence;
   };
   struct cycle_info {
     std::string name;
@@ -58,6 +62,14 @@ public:
   std::size_t add_cycle(const std::string& name, const std::vector<std::string>& points);
   action_handle add_action(const std::string& point, const std::string& name);
   void add_dependency(action_handle later, action_handle earlier);
+  /// The action called `name` on `point`; throws control_error naming the point's actions.
+  action_handle find_action(const std::string& point, const std::string& name) const;
+  /// Places `action` immediately after `anchor`: it waits on the anchor, and every action that
+  /// waited on the anchor waits on it instead.
+  void place_after(action_handle action, const std::string& anchor);
+  /// Places `action` immediately before `anchor`: it waits on what the anchor waited on, and the
+  /// anchor waits on it.
+  void place_before(action_handle action, const std::string& anchor);
 
   /// Actions of a point in execution order; throws control_error naming a dependency cycle.
   std::vector<std::size_t> order(std::size_t point) const;
@@ -75,11 +87,36 @@ private:
 };
 } // namespace detail
 
+/// What control_model::action returns: the new action's handle (it converts to action_handle),
+/// which may still be placed once, relative to a named action of the same control point. Use it
+/// at once: it refers to its model.
+class new_action {
+public:
+  new_action(detail::model_structure& structure, action_handle handle) : structure_(&structure), handle_(handle) {}
+  operator action_handle() const { return handle_; }
+  /// Runs right after `anchor`, before every action that depended on the anchor.
+  action_handle after(const std::string& anchor) const {
+    structure_->place_after(handle_, anchor);
+    return handle_;
+  }
+  /// Runs right before `anchor`, after every action the anchor depended on.
+  action_handle before(const std::string& anchor) const {
+    structure_->place_before(handle_, anchor);
+    return handle_;
+  }
+
+private:
+  detail::model_structure* structure_;
+  action_handle handle_;
+};
+
 template<class State>
 class control_model {
 public:
   using action_function = std::function<void(State&)>;
   using predicate = std::function<bool(const State&)>;
+  /// Called before every action that runs, with its control point and name (tracing, tests).
+  using observer = std::function<void(const std::string& point, const std::string& action, const State&)>;
 
   control_model& point(const std::string& name) {
     structure_.add_point(name);
@@ -93,17 +130,24 @@ public:
     return *this;
   }
 
-  action_handle action(const std::string& point, const std::string& name, action_function f) {
+  /// Registers an action on `point`; unplaced, it runs after the actions registered before it
+  /// that it does not precede by a dependency. `.after(name)` / `.before(name)` place it.
+  new_action action(const std::string& point, const std::string& name, action_function f) {
     const action_handle h = structure_.add_action(point, name);
     if (functions_.size() <= h.point) functions_.resize(h.point + 1);
     functions_[h.point].push_back(std::move(f));
-    return h;
+    return {structure_, h};
   }
   /// `later` runs after `earlier`; both must belong to the same control point.
   control_model& depends(action_handle later, action_handle earlier) {
     structure_.add_dependency(later, earlier);
     return *this;
   }
+  /// The action called `name` on `point` (a clear error naming the point's actions if none).
+  action_handle find(const std::string& point, const std::string& name) const {
+    return structure_.find_action(point, name);
+  }
+  void observe(observer f) { observer_ = std::move(f); }
 
   /// Execution order of the actions of `point`, by name.
   std::vector<std::string> order(const std::string& point) const {
@@ -157,12 +201,17 @@ public:
 private:
   void run_point(std::size_t p, const std::vector<std::size_t>& order, State& state) const {
     if (p >= functions_.size()) return;
-    for (std::size_t a : order) functions_[p][a](state);
+    const auto& point = structure_.points()[p];
+    for (std::size_t a : order) {
+      if (observer_) observer_(point.name, point.actions[a].name, state);
+      functions_[p][a](state);
+    }
   }
 
   detail::model_structure structure_;
   std::vector<predicate> predicates_;
   std::vector<std::vector<action_function>> functions_;
+  observer observer_;
 };
 
 } // namespace flecsi_lite::control

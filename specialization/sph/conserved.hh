@@ -4,6 +4,7 @@
 #pragma once
 
 #include "specialization/sph/density.hh"
+#include "specialization/sph/tasks.hh"
 
 #include "flecsi_lite/util.hh"
 
@@ -88,13 +89,13 @@ std::array<double, angular_components<D>> cross(const vector<D>& x, const vector
 /// This rank's exact partial sums over its owned particles: fluid particles contribute m, m v,
 /// x cross m v, m v^2/2 and m u; walls contribute their boundary impulse m J and work m w.
 template<int D>
-conserved_sums<D> conserved_quantities(accessor<vector<D>, ro> x, accessor<vector<D>, ro> v,
-                                       accessor<double, ro> m, accessor<double, ro> u,
-                                       accessor<particle_kind, ro> kind, accessor<vector<D>, ro> impulse,
-                                       accessor<double, ro> work) {
+conserved_sums<D> conserved_quantities(ro<vector<D>> x, ro<vector<D>> v,
+                                       ro<double> m, ro<double> u,
+                                       ro<particle_kind> kind, ro<vector<D>> impulse,
+                                       ro<double> work) {
   // Chunks in parallel, each with its own accumulator; exact sums make the result order-free.
   const std::size_t n = x.size();
-  const std::size_t threads = static_cast<std::size_t>(Kokkos::DefaultHostExecutionSpace().concurrency());
+  const std::size_t threads = static_cast<std::size_t>(flecsi_lite::concurrency());
   const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(n, 4 * threads));
   std::vector<conserved_sums<D>> partial(chunks);
   flecsi_lite::forall(chunks, [&](std::size_t c) {

@@ -6,6 +6,7 @@
 #include "specialization/sph/kernel_at.hh"
 #include "specialization/sph/neighbourhood.hh"
 #include "specialization/sph/settings.hh"
+#include "specialization/sph/tasks.hh"
 
 #include "specialization/physics/kernels.hh"
 #include "specialization/physics/smoothing_length.hh"
@@ -16,13 +17,6 @@
 #include <cmath>
 
 namespace flecsph::sph {
-
-template<class T, flecsi_lite::privilege Owned, flecsi_lite::privilege Ghost = flecsi_lite::na>
-using accessor = flecsi_lite::accessor<T, Owned, Ghost>;
-using flecsi_lite::na;
-using flecsi_lite::ro;
-using flecsi_lite::rw;
-using flecsi_lite::wo;
 
 namespace detail {
 /// rho(h) = sum_b m_b W(r_ab, h) and its derivative sum_b m_b dW/dh over a's list.
@@ -55,8 +49,8 @@ void density_sums(const neighbour_walk<D>& walk, std::size_t a, double h, const 
 /// the caller must search again and call this task again.
 template<int D>
 double compute_density(const neighbourhood<D>& neighbours, physics_settings settings,
-                       accessor<vector<D>, ro, ro> x, accessor<double, ro, ro> m, accessor<particle_kind, ro> kind,
-                       accessor<double, rw> h, accessor<double, wo> rho, accessor<double, wo> omega) {
+                       ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> m, ro<particle_kind> kind,
+                       rw<double> h, wo<double> rho, wo<double> omega) {
   const neighbour_walk<D> walk(neighbours);
   const std::size_t n = neighbours.size();
   const vector<D>* xs = x.data();
@@ -65,7 +59,7 @@ double compute_density(const neighbourhood<D>& neighbours, physics_settings sett
   double worst = 0;
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
     using Kernel = decltype(kernel);
-    for_each_target(
+    flecsi_lite::forall_reduce(
       n,
       [&](std::size_t a, double& local_worst) {
         const double h_start = h(a), h_limit = half_reach * h_start;
@@ -84,7 +78,7 @@ double compute_density(const neighbourhood<D>& neighbours, physics_settings sett
         omega(a) = adapt ? physics::grad_h_omega<D>(h_a, rho_a, drho_dh) : 1.0;
         local_worst = std::max(local_worst, h_a / h_limit);
       },
-      Kokkos::Max<double>(worst), "sph::compute_density");
+      Kokkos::Max<double>(worst), "sph::compute_density", target_schedule);
   });
   return std::max(worst, 0.0);  // no owned particle: the reduction's identity is -inf
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "specialization/sph/density.hh"
+#include "specialization/sph/tasks.hh"
 
 #include "specialization/physics/eos.hh"
 #include "specialization/physics/viscosity.hh"
@@ -13,10 +14,10 @@ namespace flecsph::sph {
 /// product form; zero in 1D) of every owned particle.
 template<int D>
 void compute_velocity_gradients(const neighbourhood<D>& neighbours, physics_settings settings,
-                                accessor<vector<D>, ro, ro> x, accessor<vector<D>, ro, ro> v,
-                                accessor<double, ro, ro> m, accessor<double, ro> h, accessor<double, ro> rho,
-                                accessor<double, ro> omega, accessor<double, wo> divergence,
-                                accessor<double, wo> curl) {
+                                ro_with_ghosts<vector<D>> x, ro_with_ghosts<vector<D>> v,
+                                ro_with_ghosts<double> m, ro<double> h, ro<double> rho,
+                                ro<double> omega, wo<double> divergence,
+                                wo<double> curl) {
   const neighbour_walk<D> walk(neighbours);
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
     using Kernel = decltype(kernel);
@@ -55,11 +56,11 @@ inline double pressure_over_rho2(double P, double omega, double rho) { return P 
 /// Pressure, sound speed and P / (Omega rho^2) of every owned particle; the Balsara factor when
 /// the switch is on (from the velocity gradients of compute_velocity_gradients), 1 otherwise.
 template<int D>
-void compute_equation_of_state(physics_settings settings, accessor<double, ro> rho, accessor<double, ro> u,
-                               accessor<double, ro> h, accessor<double, ro> omega, accessor<double, ro> divergence,
-                               accessor<double, ro> curl, accessor<double, wo> pressure,
-                               accessor<double, wo> sound_speed, accessor<double, wo> pressure_term,
-                               accessor<double, wo> balsara) {
+void compute_equation_of_state(physics_settings settings, ro<double> rho, ro<double> u,
+                               ro<double> h, ro<double> omega, ro<double> divergence,
+                               ro<double> curl, wo<double> pressure,
+                               wo<double> sound_speed, wo<double> pressure_term,
+                               wo<double> balsara) {
   const physics::equation_of_state eos = settings.eos;
   flecsi_lite::forall(rho.size(), [&](std::size_t a) {
     pressure(a) = eos.pressure(rho(a), u(a));

@@ -6,6 +6,7 @@
 #include "specialization/sph/density.hh"
 #include "specialization/sph/equation_of_state.hh"
 #include "specialization/sph/kernel_at.hh"
+#include "specialization/sph/tasks.hh"
 
 #include "specialization/physics/viscosity.hh"
 
@@ -84,18 +85,18 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
 /// the time integration.
 template<int D>
 double compute_forces(const neighbourhood<D>& neighbours, physics_settings settings,
-                      accessor<vector<D>, ro, ro> x, accessor<vector<D>, ro, ro> v, accessor<double, ro, ro> m,
-                      accessor<double, ro, ro> h, accessor<double, ro, ro> rho, accessor<double, ro, ro> P,
-                      accessor<double, ro, ro> cs, accessor<double, ro, ro> pressure_term,
-                      accessor<double, ro, ro> u, accessor<double, ro, ro> balsara, accessor<particle_kind, ro> kind,
-                      accessor<vector<D>, wo> acceleration, accessor<double, wo> du_dt) {
+                      ro_with_ghosts<vector<D>> x, ro_with_ghosts<vector<D>> v, ro_with_ghosts<double> m,
+                      ro_with_ghosts<double> h, ro_with_ghosts<double> rho, ro_with_ghosts<double> P,
+                      ro_with_ghosts<double> cs, ro_with_ghosts<double> pressure_term,
+                      ro_with_ghosts<double> u, ro_with_ghosts<double> balsara, ro<particle_kind> kind,
+                      wo<vector<D>> acceleration, wo<double> du_dt) {
   const neighbour_walk<D> walk(neighbours);
   const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
                                    P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
   double smallest = std::numeric_limits<double>::max();
   const auto loop = [&](auto kernel_type, auto with_conductivity) {
     using Kernel = decltype(kernel_type);
-    for_each_target(
+    flecsi_lite::forall_reduce(
       neighbours.size(),
       [&](std::size_t a, double& local_smallest) {
         vector<D> dv_dt;
@@ -112,7 +113,7 @@ double compute_forces(const neighbourhood<D>& neighbours, physics_settings setti
         if (a2 > 0) dt = std::min(dt, settings.acceleration_factor * std::sqrt(h_a / std::sqrt(a2)));
         local_smallest = std::min(local_smallest, dt);
       },
-      Kokkos::Min<double>(smallest), "sph::compute_forces");
+      Kokkos::Min<double>(smallest), "sph::compute_forces", target_schedule);
   };
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel_type) {
     if (settings.conductivity > 0) loop(kernel_type, std::true_type{});

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "specialization/sph/density.hh"
+#include "specialization/sph/tasks.hh"
 
 #include "flecsi_lite/topology/ntree.hh"
 
@@ -32,11 +33,11 @@ void wrap_periodic(const tree::domain<D>& space, vector<D>& x) {
 }
 
 template<int D>
-void kick_drift(double dt, tree::domain<D> space, accessor<particle_kind, ro> kind,
-                accessor<vector<D>, rw> x, accessor<vector<D>, rw> v, accessor<vector<D>, wo> v_half,
-                accessor<double, rw> u, accessor<double, wo> u_half, accessor<vector<D>, ro> acceleration,
-                accessor<double, ro> du_dt, accessor<vector<D>, rw> impulse, accessor<double, rw> work,
-                accessor<double, rw> drift) {
+void kick_drift(double dt, tree::domain<D> space, ro<particle_kind> kind,
+                rw<vector<D>> x, rw<vector<D>> v, wo<vector<D>> v_half,
+                rw<double> u, wo<double> u_half, ro<vector<D>> acceleration,
+                ro<double> du_dt, rw<vector<D>> impulse, rw<double> work,
+                rw<double> drift) {
   const double half = 0.5 * dt;
   flecsi_lite::forall(x.size(), [&](std::size_t a) {
     const vector<D>& acc = acceleration(a);
@@ -64,9 +65,9 @@ void kick_drift(double dt, tree::domain<D> space, accessor<particle_kind, ro> ki
 }
 
 template<int D>
-void kick(double dt, accessor<particle_kind, ro> kind, accessor<vector<D>, ro> v_half, accessor<double, ro> u_half,
-          accessor<vector<D>, ro> acceleration, accessor<double, ro> du_dt, accessor<vector<D>, wo> v,
-          accessor<double, wo> u, accessor<vector<D>, rw> impulse, accessor<double, rw> work) {
+void kick(double dt, ro<particle_kind> kind, ro<vector<D>> v_half, ro<double> u_half,
+          ro<vector<D>> acceleration, ro<double> du_dt, wo<vector<D>> v,
+          wo<double> u, rw<vector<D>> impulse, rw<double> work) {
   const double half = 0.5 * dt;
   flecsi_lite::forall(v.size(), [&](std::size_t a) {
     const vector<D>& acc = acceleration(a);

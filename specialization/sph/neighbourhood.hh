@@ -6,6 +6,7 @@
 
 #include "specialization/sph/fields.hh"
 
+#include "flecsi_lite/execution.hh"
 #include "flecsi_lite/topology/ntree.hh"
 #include "flecsi_lite/util.hh"
 
@@ -61,15 +62,11 @@ struct neighbour_walk {
   }
 };
 
-/// reduce(a, partial) for every owned particle a of a neighbourhood, the loop of the pair tasks:
-/// dynamically scheduled in chunks, because the work per particle varies (Newton iterations of h,
-/// viscous pairs near shocks) and an even split of the particles leaves a thread waiting. Each
-/// particle's own sums are unchanged by the schedule.
-template<class Reducer, class Body>
-void for_each_target(std::size_t n, const Body& body, Reducer reducer, const char* name) {
-  using policy = Kokkos::RangePolicy<flecsi_lite::execution_space, Kokkos::Schedule<Kokkos::Dynamic>>;
-  Kokkos::parallel_reduce(name, policy(0, n).set_chunk_size(256), body, reducer);
-}
+/// The loop of the pair tasks over the targets: dynamically scheduled, `chunk` targets at a time,
+/// because the work per particle varies (Newton iterations of h, viscous pairs near shocks) and
+/// an even split of the particles leaves a thread waiting. Each particle's own sums are
+/// unchanged by the schedule.
+inline constexpr flecsi_lite::dynamic_schedule target_schedule{256};
 
 /// Fills `out` from the tree's search over owned targets (symmetric criterion, reach =
 /// the tree's support). Call after ntree::distribute(), or refresh_local_tree().

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "specialization/sph/density.hh"
+#include "specialization/sph/tasks.hh"
 
 #include <algorithm>
 
@@ -33,8 +34,8 @@ inline bool ghosts_still_suffice(const distribution_slack& slack, double support
   return 2 * slack.drift + support * slack.growth <= support * (1 + skin);
 }
 
-inline distribution_slack measure_distribution_slack(accessor<double, ro> h, accessor<double, ro> drift,
-                                                     accessor<double, ro> distributed_h) {
+inline distribution_slack measure_distribution_slack(ro<double> h, ro<double> drift,
+                                                     ro<double> distributed_h) {
   distribution_slack slack;
   for (std::size_t a = 0; a < h.size(); ++a) {
     slack.drift = std::max(slack.drift, drift(a) / distributed_h(a));
@@ -44,7 +45,7 @@ inline distribution_slack measure_distribution_slack(accessor<double, ro> h, acc
 }
 
 /// After a distribution: the path lengths start again from zero, from the current h.
-inline void mark_distributed(accessor<double, ro> h, accessor<double, wo> drift, accessor<double, wo> distributed_h) {
+inline void mark_distributed(ro<double> h, wo<double> drift, wo<double> distributed_h) {
   flecsi_lite::forall(h.size(), [&](std::size_t a) {
     drift(a) = 0;
     distributed_h(a) = h(a);

@@ -3,6 +3,7 @@
 // criterion, then apply the exact pair criterion to every target of the group with that list.
 #pragma once
 
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/detail/list_filter.hh"
 #include "flecsi_lite/topology/ntree/detail/neighbour_list_builder.hh"
@@ -148,13 +149,13 @@ private:
     prepare(chunks);
     if (group_count == 0) return;
     dispatch_search(search_.kind, space.any_periodic(), [&](auto kind, auto periodic) {
-      host_for_dynamic("ntree::group_walk", chunks, [&](std::size_t c) {
+      flecsi_lite::forall(chunks, [&](std::size_t c) {
         workspace& work = workspaces_[c];
         for (std::size_t g = group_count * c / chunks; g < group_count * (c + 1) / chunks; ++g) {
           work.group = g;
           body(c, work, kind, periodic);
         }
-      });
+      }, "ntree::group_walk", flecsi_lite::dynamic_schedule{});
     });
   }
 

@@ -3,7 +3,7 @@
 // bottom-up pass for mass, centre of mass, tight bounding box, largest h and quadrupole.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/multipole.hh"
 #include "flecsi_lite/topology/ntree/detail/node_table.hh"
@@ -98,8 +98,8 @@ public:
       if (level_size(l) < parallel_level_size) {
         for (std::uint32_t i = level_begin_[l]; i < level_begin_[l + 1]; ++i) compute_node(i);
       } else {
-        host_for("ntree::hashed_tree::refit", level_size(l),
-                 [this, l](std::size_t i) { compute_node(level_begin_[l] + i); });
+        flecsi_lite::forall(
+          level_size(l), [this, l](std::size_t i) { compute_node(level_begin_[l] + i); }, "ntree::hashed_tree::refit");
       }
     }
   }
@@ -148,7 +148,7 @@ private:
     const std::size_t count = last - first;
     child_begin_.resize(count * (children + 1));
     child_offset_.resize(count);
-    host_for("ntree::hashed_tree::split", count, [&](std::size_t i) {
+    flecsi_lite::forall(count, [&](std::size_t i) {
       const tree_node<D>& parent = nodes_[first + i];
       std::uint32_t* bound = child_begin_.data() + i * (children + 1);
       std::uint32_t nonempty = 0;
@@ -166,11 +166,11 @@ private:
         for (unsigned c = 0; c < children; ++c) nonempty += bound[c + 1] > bound[c];
       }
       child_offset_[i] = nonempty;
-    });
-    const std::size_t added = host_exclusive_scan("ntree::hashed_tree::offsets",
-                                                  child_offset_.data(), count);
+    }, "ntree::hashed_tree::split");
+    const std::size_t added =
+      flecsi_lite::exclusive_scan(child_offset_.data(), count, "ntree::hashed_tree::offsets");
     nodes_.resize(last + added);
-    host_for("ntree::hashed_tree::link", count, [&](std::size_t i) {
+    flecsi_lite::forall(count, [&](std::size_t i) {
       tree_node<D>& parent = nodes_[first + i];
       const std::uint32_t next = i + 1 < count ? child_offset_[i + 1]
                                                : static_cast<std::uint32_t>(added);
@@ -188,7 +188,7 @@ private:
         node.end = bound[c + 1];
         node.level = static_cast<std::uint8_t>(parent.level + 1);
       }
-    });
+    }, "ntree::hashed_tree::link");
     return added;
   }
 

@@ -3,7 +3,7 @@
 // their layouts (image shift codes separate or packed into the entries, renamed rows).
 #pragma once
 
-#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 
 #include <algorithm>
@@ -101,7 +101,7 @@ struct list_layout {
 
 /// How many chunks to cut `work_items` items into for dynamic scheduling over the host threads.
 inline std::size_t chunk_count_for(std::size_t work_items) {
-  const std::size_t wanted = 16 * static_cast<std::size_t>(host_concurrency());
+  const std::size_t wanted = 16 * static_cast<std::size_t>(flecsi_lite::concurrency());
   return std::max<std::size_t>(1, std::min(work_items, wanted));
 }
 

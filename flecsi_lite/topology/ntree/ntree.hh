@@ -93,7 +93,8 @@ public:
   void resize(std::size_t local_count);
 
   /// Collective: keys, sample sort, all-to-all of all fields, local sort by (key, id), branch
-  /// sharing, ghosts (plan set, built-in fields copied) and the local tree. Afterwards the
+  /// sharing, ghosts (plan set; the executor copies the built-in fields' ghosts for the local
+  /// tree task, other fields' on their first ghost read) and the local tree. Afterwards the
   /// owned particles of rank 0, 1, ... concatenated are in increasing (key, id) order.
   distribution_stats distribute();
 
@@ -142,7 +143,6 @@ private:
   void check_periodic_reach(std::size_t n, MPI_Comm comm);
   box<D> find_key_box(const point<D>* x, std::size_t n, MPI_Comm comm) const;
   std::vector<std::vector<std::size_t>> find_ghost_sends(std::size_t& branch_count);
-  void mark_built_in_ghosts_current();
   void build_local_tree();
 
   config config_;

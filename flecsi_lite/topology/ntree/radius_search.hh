@@ -3,6 +3,7 @@
 // periodic images included; neighbours come in ascending sorted index.
 #pragma once
 
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/detail/neighbour_list_builder.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
@@ -85,14 +86,14 @@ public:
     const std::uint32_t allowed = space.allowed_shifts();
     const search_options options = options_;
     dispatch_search(options.kind, space.any_periodic(), [&](auto kind, auto periodic) {
-      host_for_dynamic("ntree::radius_search", tree.size(), [&](std::size_t a) {
+      flecsi_lite::forall(tree.size(), [&](std::size_t a) {
         if (!options.is_target(a)) return;
         walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
           tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a],
           options.support, [&](std::size_t b, shift_code code) {
             call_apply<D>(apply, a, b, code, shifts);
           });
-      });
+      }, "ntree::radius_search", flecsi_lite::dynamic_schedule{});
     });
   }
 
@@ -109,7 +110,7 @@ public:
     const bool periodic_domain = space.any_periodic();
     const search_options options = options_;
     dispatch_search(options.kind, periodic_domain, [&](auto kind, auto periodic) {
-      host_for_dynamic("ntree::radius_search::lists", chunks, [&](std::size_t c) {
+      flecsi_lite::forall(chunks, [&](std::size_t c) {
         auto& part = builder_[c];
         const std::size_t first = n * c / chunks;
         const std::size_t last = n * (c + 1) / chunks;
@@ -121,7 +122,7 @@ public:
               part.append(a, static_cast<std::uint32_t>(b), code, entries);
             });
         }
-      });
+      }, "ntree::radius_search::lists", flecsi_lite::dynamic_schedule{});
     });
     builder_.finish(out, entries);
   }

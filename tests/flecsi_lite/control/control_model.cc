@@ -86,3 +86,108 @@ TEST_CASE("the control model renders as a Graphviz graph with every point and ac
   CHECK(text.find("cycle: main") != std::string::npos);
   CHECK(text.find("repeat") != std::string::npos);
 }
+
+namespace {
+/// The shape of the SPH step: a chain of physics actions that ends with the clock, and an
+/// independent action registered after them.
+control_model<state> step_model() {
+  control_model<state> m;
+  m.point("advance");
+  auto drift = m.action("advance", "kick_drift", logger("kick_drift"));
+  auto forces = m.action("advance", "forces", logger("forces"));
+  auto kick = m.action("advance", "kick", logger("kick"));
+  auto clock = m.action("advance", "clock", [](state& s) { ++s.step; });
+  m.action("advance", "report", logger("report"));
+  m.depends(forces, drift).depends(kick, forces).depends(clock, kick);
+  return m;
+}
+} // namespace
+
+TEST_CASE("after(name) places an action right after its anchor, before the anchor's dependents") {
+  auto m = step_model();
+  m.action("advance", "cooling", logger("cooling")).after("forces");
+  CHECK(m.order("advance") == std::vector<std::string>{"kick_drift", "forces", "cooling", "kick", "clock", "report"});
+  // Appended without a place, it would run after the clock (ties broken by registration order).
+  m.action("advance", "late", logger("late"));
+  CHECK(m.order("advance").back() == "late");
+}
+
+TEST_CASE("before(name) places an action right before its anchor, after what the anchor waited on") {
+  auto m = step_model();
+  m.action("advance", "potential", logger("potential")).before("kick");
+  m.action("advance", "first", logger("first")).before("kick_drift");
+  CHECK(m.order("advance") ==
+        std::vector<std::string>{"first", "kick_drift", "forces", "potential", "kick", "clock", "report"});
+}
+
+TEST_CASE("a placed action runs exactly next to its anchor even among independent actions") {
+  control_model<state> m;
+  m.point("analyze");
+  m.action("analyze", "conserved", logger("conserved"));
+  m.action("analyze", "progress", logger("progress"));
+  m.action("analyze", "mine", logger("mine")).after("conserved");
+  m.action("analyze", "theirs", logger("theirs")).before("conserved");
+  CHECK(m.order("analyze") == std::vector<std::string>{"theirs", "conserved", "mine", "progress"});
+}
+
+TEST_CASE("actions placed after the same anchor run last-placed first; chains keep their order") {
+  auto m = step_model();
+  m.action("advance", "a", logger("a")).after("forces");
+  m.action("advance", "b", logger("b")).after("forces");  // immediately after forces: before a
+  m.action("advance", "c", logger("c")).after("a");
+  CHECK(m.order("advance") ==
+        std::vector<std::string>{"kick_drift", "forces", "b", "a", "c", "kick", "clock", "report"});
+}
+
+TEST_CASE("placed actions run in their place on every iteration of a cycle") {
+  control_model<state> m;
+  m.cycle("evolve", {"advance"}, [](const state& s) { return s.step < 2; });
+  auto forces = m.action("advance", "forces", logger("forces"));
+  auto clock = m.action("advance", "clock", [](state& s) { ++s.step; });
+  m.depends(clock, forces);
+  m.action("advance", "cooling", logger("cooling")).after("forces");
+  m.action("advance", "stamp", logger("stamp")).before("clock");
+  std::vector<std::string> seen;
+  m.observe([&seen](const std::string& point, const std::string& action, const state& s) {
+    seen.push_back(point + "/" + action + std::to_string(s.step));
+  });
+  state s;
+  m.run(s);
+  CHECK(s.log == std::vector<std::string>{"forces0", "cooling0", "stamp0", "forces1", "cooling1", "stamp1"});
+  CHECK(seen == std::vector<std::string>{"advance/forces0", "advance/cooling0", "advance/stamp0", "advance/clock0",
+                                         "advance/forces1", "advance/cooling1", "advance/stamp1", "advance/clock1"});
+}
+
+TEST_CASE("actions are found by name; a wrong name is reported with the point's actions") {
+  auto m = step_model();
+  const auto kick = m.find("advance", "kick");
+  CHECK(kick.index == 2);
+  auto check = m.action("advance", "check", logger("check"));
+  m.depends(check, m.find("advance", "clock"));
+  CHECK(m.order("advance").back() == "check");
+  CHECK_THROWS_WITH(m.find("advance", "forcs"), Catch::Contains("no action 'forcs'") &&
+                                                  Catch::Contains("control point 'advance'") &&
+                                                  Catch::Contains("kick_drift, forces, kick, clock, report"));
+  CHECK_THROWS_WITH(m.action("advance", "x", logger("x")).after("kik"),
+                    Catch::Contains("no action 'kik'") && Catch::Contains("control point 'advance'"));
+  CHECK_THROWS_WITH(m.find("advnace", "kick"), Catch::Contains("unknown control point 'advnace'"));
+  auto twice = m.action("advance", "twice", logger("twice"));
+  twice.after("forces");
+  CHECK_THROWS_WITH(twice.before("kick"), Catch::Contains("already placed after forces"));
+  CHECK_THROWS_WITH(m.action("advance", "self", logger("self")).after("self"), Catch::Contains("itself"));
+}
+
+TEST_CASE("the Graphviz output shows a placed action, marked, between its anchor and its dependents") {
+  auto m = step_model();
+  m.action("advance", "cooling", logger("cooling")).after("forces");
+  std::ostringstream dot;
+  m.write_graphviz(dot, "test");
+  const std::string text = dot.str();
+  // Actions of point 0: kick_drift a0, forces a1, kick a2, clock a3, report a4, cooling a5.
+  CHECK(text.find("p0a5 [label=\"cooling\", style=\"rounded,filled\"") != std::string::npos);
+  CHECK(text.find("placed after forces") != std::string::npos);
+  CHECK(text.find("p0a1 -> p0a5") != std::string::npos);  // forces -> cooling
+  CHECK(text.find("p0a5 -> p0a2") != std::string::npos);  // cooling -> kick
+  CHECK(text.find("p0a1 -> p0a2") == std::string::npos);  // no longer forces -> kick directly
+  CHECK(text.find("p0a0 [label=\"kick_drift\"];") != std::string::npos);  // unplaced: plain
+}

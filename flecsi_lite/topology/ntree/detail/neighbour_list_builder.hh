@@ -3,7 +3,7 @@
 // the row counts.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 
@@ -154,8 +154,8 @@ public:
       all_in_regions = all_in_regions && chunks_[c].in_region();
     }
     const std::size_t rows = out.offsets.size() - 1;
-    const std::size_t total = host_exclusive_scan("ntree::neighbour_lists::offsets",
-                                                  out.offsets.data(), rows + 1);
+    const std::size_t total =
+      flecsi_lite::exclusive_scan(out.offsets.data(), rows + 1, "ntree::neighbour_lists::offsets");
     const bool with_shifts = kind == entries::separate_shifts;
     if (all_in_regions) {
       // Chunk c's place starts at the sum of the sizes of the chunks before it, at most where
@@ -173,14 +173,14 @@ public:
       neighbour_lists gathered;
       gathered.neighbours.resize(total);
       gathered.shifts.resize(with_shifts ? total : 0);
-      host_for("ntree::neighbour_lists::gather", chunk_count_, [&](std::size_t c) {
+      flecsi_lite::forall(chunk_count_, [&](std::size_t c) {
         const chunk& part = chunks_[c];
         if (part.size_ == 0) return;
         const std::size_t at = out.offsets[part.first_row_];
         std::memcpy(gathered.neighbours.data() + at, part.neighbours_, part.size_ * sizeof(std::uint32_t));
         if (with_shifts)
           std::memcpy(gathered.shifts.data() + at, part.shifts_, part.size_ * sizeof(shift_code));
-      });
+      }, "ntree::neighbour_lists::gather");
       out.neighbours.swap(gathered.neighbours);
       out.shifts.swap(gathered.shifts);
     }

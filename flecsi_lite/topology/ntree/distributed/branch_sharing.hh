@@ -7,7 +7,7 @@
 
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 #include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
 
@@ -229,11 +229,11 @@ std::vector<std::vector<std::size_t>> shared_particles(const hashed_tree<D>& tre
     if (static_cast<int>(r) != me)
       for (std::size_t j = 0; j < branches[r].size(); ++j) items.emplace_back(r, j);
   std::vector<std::vector<std::uint32_t>> hits(items.size());
-  host_for_dynamic("ntree::shared_particles", items.size(), [&](std::size_t w) {
+  flecsi_lite::forall(items.size(), [&](std::size_t w) {
     const auto [r, j] = items[w];
     for_each_within_branch<D>(tree, space, branches[r][j], support, factor,
                               [&hits, w](std::size_t i) { hits[w].push_back(static_cast<std::uint32_t>(i)); });
-  });
+  }, "ntree::shared_particles", flecsi_lite::dynamic_schedule{});
 
   std::vector<std::vector<std::size_t>> result(ranks);
   std::vector<std::uint8_t> marked(tree.size(), 0);

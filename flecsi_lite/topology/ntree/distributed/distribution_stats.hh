@@ -35,8 +35,8 @@ struct distribution_stats {
   double time_exchange = 0;    ///< all-to-all of all fields
   double time_local_sort = 0;  ///< sort of the received particles
   double time_branches = 0;    ///< owned tree, branch sharing, shared particles
-  double time_ghosts = 0;      ///< ghost plan and copy of the built-in fields
-  double time_tree = 0;        ///< local tree over owned and ghost particles
+  double time_ghosts = 0;      ///< ghost plan
+  double time_tree = 0;        ///< ghost copies of the built-in fields, local tree over owned and ghosts
   double time_total = 0;
 };
 

@@ -1,5 +1,4 @@
-// Sender-driven ghost plans and the all-fields ghost copy used when the ntree topology builds
-// its ghosts (later copies of single fields go through the executor with the same plan).
+// Sender-driven ghost plans of the ntree topology (the executor copies values along them).
 #include "flecsi_lite/topology/ntree/distributed/ghost_exchange.hh"
 
 #include "flecsi_lite/runtime/context.hh"
@@ -44,47 +43,6 @@ std::size_t ghost_count(const data::ghost_plan& plan) {
   std::size_t total = 0;
   for (const auto& peer : plan.peers) total += peer.receive_count;
   return total;
-}
-
-void copy_to_ghosts(const data::ghost_plan& plan, const std::vector<data::field_storage_base*>& fields,
-                    std::size_t owned_size, MPI_Comm comm) {
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  std::size_t per_particle = 0;
-  for (const auto* f : fields) per_particle += f->element_size();
-
-  std::vector<int> send_counts(size, 0), send_offsets(size, 0), receive_counts(size, 0),
-    receive_offsets(size, 0);
-  std::size_t send_total = 0, receive_total = 0;
-  for (const auto& peer : plan.peers) {
-    send_counts[peer.rank] = checked_int(peer.send.size() * per_particle);
-    receive_counts[peer.rank] = checked_int(peer.receive_count * per_particle);
-  }
-  for (int r = 0; r < size; ++r) {
-    send_offsets[r] = checked_int(send_total);
-    receive_offsets[r] = checked_int(receive_total);
-    send_total += static_cast<std::size_t>(send_counts[r]);
-    receive_total += static_cast<std::size_t>(receive_counts[r]);
-  }
-  std::vector<std::byte> send(send_total), receive(receive_total);
-  for (const auto& peer : plan.peers) {
-    std::byte* out = send.data() + send_offsets[peer.rank];
-    for (const auto* f : fields) {
-      f->pack(peer.send.data(), peer.send.size(), out);
-      out += peer.send.size() * f->element_size();
-    }
-  }
-  runtime::check_mpi(MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_BYTE,
-                                   receive.data(), receive_counts.data(), receive_offsets.data(), MPI_BYTE,
-                                   comm),
-                     "ntree ghost exchange");
-  for (const auto& peer : plan.peers) {
-    const std::byte* in = receive.data() + receive_offsets[peer.rank];
-    for (auto* f : fields) {
-      f->unpack(in, owned_size + peer.receive_first, peer.receive_count);
-      in += peer.receive_count * f->element_size();
-    }
-  }
 }
 
 } // namespace flecsi_lite::topology::ntree

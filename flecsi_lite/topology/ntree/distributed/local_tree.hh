@@ -7,7 +7,7 @@
 #include "flecsi_lite/topology/ntree/distributed/sorted_runs.hh"
 #include "flecsi_lite/topology/ntree/group_walk.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/sfc/ordering.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
@@ -40,10 +40,10 @@ public:
     ids_.resize(total);
     apply_permutation(sorted_to_storage_, keys, keys_.data());
     apply_permutation(sorted_to_storage_, ids, ids_.data());
-    host_for("ntree::local_tree::index", total, [this](std::size_t s) {
+    flecsi_lite::forall(total, [this](std::size_t s) {
       storage_to_sorted_[sorted_to_storage_[s]] = s;
       owned_mask_[s] = sorted_to_storage_[s] < owned_;
-    });
+    }, "ntree::local_tree::index");
     // The lists are written in place (find_neighbours), row = storage index of the target.
     for (std::size_t a = 1; a < owned; ++a)
       if (storage_to_sorted_[a - 1] > storage_to_sorted_[a])
@@ -116,11 +116,11 @@ private:
     const std::size_t* from = sorted_to_storage_.data();
     point<D>* sorted_x = x_.data();
     double *sorted_m = m_.data(), *sorted_h = h_.data();
-    host_for("ntree::local_tree::gather", n, [=](std::size_t s) {
+    flecsi_lite::forall(n, [=](std::size_t s) {
       sorted_x[s] = x[from[s]];
       sorted_m[s] = m[from[s]];
       sorted_h[s] = h[from[s]];
-    });
+    }, "ntree::local_tree::gather");
   }
 
   // The walk keeps its workspaces between searches with the same options.

@@ -3,6 +3,7 @@
 // ghosts and the local tree.
 #pragma once
 
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/runtime/timers.hh"
 #include "flecsi_lite/topology/ntree/distributed/branch_sharing.hh"
 #include "flecsi_lite/topology/ntree/distributed/ghost_exchange.hh"
@@ -21,10 +22,17 @@
 
 namespace flecsi_lite::topology::ntree {
 namespace detail {
-/// A task that only declares that the topology itself wrote the ghost values of a field, so
-/// that the executor counts them as current and copies them again only after they change.
-template<class T>
-void ghost_values_written(typename field<T>::template accessor<na, wo>) {}
+/// The task that builds the local tree over owned and ghost particles (owned, then one block per
+/// source rank in `runs`): reading the ghosts makes the executor copy them first, so that the
+/// topology's ghosts travel by the executor's copies like every other field's, and stay
+/// current for the tasks that read them next.
+template<int D>
+void build_tree(local_tree<D>& local, const std::vector<std::size_t>& runs, tree_options options,
+                field<key_type>::accessor<ro, ro> keys, field<std::uint64_t>::accessor<ro, ro> ids,
+                typename field<point<D>>::template accessor<ro, ro> x, field<double>::accessor<ro, ro> m,
+                field<double>::accessor<ro, ro> h) {
+  local.build(keys.data(), ids.data(), x.data(), m.data(), h.data(), x.owned_size(), x.size(), runs, options);
+}
 
 /// The task of ntree::refresh_local_tree: reading owned and ghost values makes the executor
 /// copy stale ghosts first.
@@ -151,7 +159,8 @@ distribution_stats ntree<D>::distribute() {
     const std::uint64_t* ids = values<std::uint64_t>(id).view().data();
     sort_permutation(keys, ids, n, order);
     std::vector<key_id> sorted(n);
-    host_for("ntree::distribute::sorted", n, [&](std::size_t i) { sorted[i] = {keys[order[i]], ids[order[i]]}; });
+    flecsi_lite::forall(
+      n, [&](std::size_t i) { sorted[i] = {keys[order[i]], ids[order[i]]}; }, "ntree::distribute::sorted");
     std::vector<double> weights;
     if (config_.balancing == balance::work) {
       const double* w = values<double>(*config_.work_weight).view().data();
@@ -209,18 +218,13 @@ distribution_stats ntree<D>::distribute() {
   }
   stats.time_branches = detail::lap(clock, "ntree::distribute branches");
 
-  // Ghosts: the plan, room for them, and the built-in fields copied right away.
+  // Ghosts: the plan and room for them (every field's ghosts are stale now).
   data::ghost_plan plan = build_sender_plan(std::move(sends), comm);
   set_sizes(n, ghost_count(plan));
   set_plan(std::move(plan));
-  copy_to_ghosts(this->plan(),
-                 {&values<point<D>>(position), &values<std::uint64_t>(id), &values<double>(mass),
-                  &values<double>(smoothing_length), &values<key_type>(key)},
-                 n, comm);
-  mark_built_in_ghosts_current();
   stats.time_ghosts = detail::lap(clock, "ntree::distribute ghosts");
 
-  build_local_tree();
+  build_local_tree();  // the executor copies the built-in fields' ghosts first
   stats.time_tree = detail::lap(clock, "ntree::distribute local tree");
   stats.time_total = MPI_Wtime() - start;
 
@@ -282,16 +286,6 @@ std::vector<std::vector<std::size_t>> ntree<D>::find_ghost_sends(std::size_t& br
 }
 
 template<int D>
-void ntree<D>::mark_built_in_ghosts_current() {
-  execute<detail::ghost_values_written<point<D>>>(position(*this));
-  execute<detail::ghost_values_written<std::uint64_t>>(id(*this));
-  execute<detail::ghost_values_written<double>>(mass(*this));
-  execute<detail::ghost_values_written<double>>(smoothing_length(*this));
-  execute<detail::ghost_values_written<key_type>>(key(*this));
-  wait_all();
-}
-
-template<int D>
 void ntree<D>::build_local_tree() {
   tree_options options;
   options.bucket_size = config_.bucket_size;
@@ -299,9 +293,9 @@ void ntree<D>::build_local_tree() {
   std::vector<std::size_t> runs{0};
   for (const auto& peer : this->plan().peers)
     if (peer.receive_count) runs.push_back(owned_size() + peer.receive_first);
-  local_.build(values<key_type>(key).view().data(), values<std::uint64_t>(id).view().data(),
-               values<point<D>>(position).view().data(), values<double>(mass).view().data(),
-               values<double>(smoothing_length).view().data(), owned_size(), total_size(), runs, options);
+  execute<detail::build_tree<D>>(local_, runs, options, key(*this), id(*this), position(*this), mass(*this),
+                                 smoothing_length(*this))
+    .wait();
 }
 
 template<int D>

@@ -2,6 +2,7 @@
 // (O(N^2)): the definition the tree searches must reproduce exactly, for tests and benchmarks.
 #pragma once
 
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
@@ -34,14 +35,14 @@ void brute_force_neighbours(const point<D>* x, const double* h, std::size_t n,
     }
   };
   out.offsets.assign(n + 1, 0);
-  host_for("ntree::brute_force::count", n, [&](std::size_t a) {
+  flecsi_lite::forall(n, [&](std::size_t a) {
     if (options.is_target(a)) scan(a, [&](std::size_t, shift_code) { ++out.offsets[a]; });
-  });
+  }, "ntree::brute_force::count");
   const std::size_t total =
-    host_exclusive_scan("ntree::brute_force::offsets", out.offsets.data(), n + 1);
+    flecsi_lite::exclusive_scan(out.offsets.data(), n + 1, "ntree::brute_force::offsets");
   out.neighbours.resize(total);
   out.shifts.resize(periodic ? total : 0);
-  host_for("ntree::brute_force::fill", n, [&](std::size_t a) {
+  flecsi_lite::forall(n, [&](std::size_t a) {
     if (!options.is_target(a)) return;
     std::size_t at = out.offsets[a];
     scan(a, [&](std::size_t b, shift_code code) {
@@ -49,7 +50,7 @@ void brute_force_neighbours(const point<D>* x, const double* h, std::size_t n,
       if (periodic) out.shifts[at] = code;
       ++at;
     });
-  });
+  }, "ntree::brute_force::fill");
 }
 
 } // namespace flecsi_lite::topology::ntree

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "flecsi_lite/topology/ntree/sfc/hilbert.hh"
-#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/sfc/morton.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
@@ -150,8 +150,7 @@ inline box<D> cell_box(curve order, key_type key, const box<D>& domain) {
 template<int D>
 void compute_keys(curve order, const box<D>& domain, const point<D>* x, std::size_t n,
                   key_type* keys) {
-  host_for("ntree::compute_keys", n,
-           [=](std::size_t i) { keys[i] = key_of<D>(order, domain, x[i]); });
+  flecsi_lite::forall(n, [=](std::size_t i) { keys[i] = key_of<D>(order, domain, x[i]); }, "ntree::compute_keys");
 }
 
 } // namespace flecsi_lite::topology::ntree

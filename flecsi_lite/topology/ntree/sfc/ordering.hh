@@ -2,7 +2,7 @@
 // sort of the keys (Knuth, TAOCP vol. 3, sec. 5.2.5) with ties between equal keys broken by id.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/detail/host_parallel.hh"
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/sfc/keys.hh"
 
 #include <cstddef>
@@ -30,8 +30,7 @@ bool is_sorted(const key_type* keys, const std::uint64_t* ids, std::size_t n);
 template<class T>
 void apply_permutation(const std::vector<std::size_t>& permutation, const T* in, T* out) {
   const std::size_t* source = permutation.data();
-  host_for("ntree::apply_permutation", permutation.size(),
-           [=](std::size_t i) { out[i] = in[source[i]]; });
+  flecsi_lite::forall(permutation.size(), [=](std::size_t i) { out[i] = in[source[i]]; }, "ntree::apply_permutation");
 }
 
 } // namespace flecsi_lite::topology::ntree

@@ -1,8 +1,8 @@
 // Branch sharing and ghosts of the ntree topology: every particle within reach of an owned one
 // is local (owned or ghost), the local search returns exactly the brute-force neighbours (ids in
 // (key, id) order, so the same lists on any rank count), periodic images included; ghosts carry
-// their owners' values, are ordered by source rank then (key, id), and later ghost copies of any
-// field through the executor deliver the owners' values.
+// their owners' values, are ordered by source rank then (key, id), and ghost copies of any field,
+// the built-in ones during distribute() included, go through the executor.
 #include <catch2/catch.hpp>
 
 #include "tests/flecsi_lite/topology/ntree/harness.hh"
@@ -206,7 +206,11 @@ TEST_CASE("ghost copies of any field deliver the owners' values, only when stale
   const auto set = ntree_test::gaussian_blobs<3>(1500, 3, 0.07, 201);
   nt::ntree<3> tree;
   load(tree, set, start::rank_zero);
+  const auto at_start = copies();
   tree.distribute();
+  // The built-in fields' ghosts travel by the executor's copies (the only ghost-copy engine),
+  // one per field: position, id, mass, smoothing length, key.
+  CHECK(copies() == at_start + 5);
   const auto sorted = sorted_reference(set, tree);
   using topology = nt::ntree<3>;
 
@@ -224,7 +228,9 @@ TEST_CASE("ghost copies of any field deliver the owners' values, only when stale
   CHECK(copies() == before + 1);
 
   // A new distribution makes the user field's ghosts stale again; the next read copies them.
+  before = copies();
   tree.distribute();
+  CHECK(copies() == before + 5);
   before = copies();
   CHECK(all_ranks(flecsi_lite::execute<tag_ghosts_hold>(topology::id(tree), user_fields<3>::tag(tree)).get()));
   CHECK(copies() == before + 1);

@@ -1,0 +1,139 @@
+// The physics steps of one SPH time step (seed Algorithm 3), each a launch of the tasks of
+// density.hh, equation_of_state.hh, forces.hh and integrator.hh on a simulation's particles:
+// neighbour search (with redistribution when needed), density and h, pressure, forces, the two
+// kicks of the leapfrog, and the choice of the next time step.
+#pragma once
+
+#include "specialization/sph/density.hh"
+#include "specialization/sph/equation_of_state.hh"
+#include "specialization/sph/forces.hh"
+#include "specialization/sph/integrator.hh"
+#include "specialization/sph/redistribution.hh"
+#include "specialization/sph/simulation.hh"
+
+#include "flecsi_lite/execution.hh"
+#include "flecsi_lite/runtime.hh"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace flecsph::sph {
+
+/// Distributes the particles (sample sort, ghosts, local tree) when `redistribute` is set or when
+/// the particles' motion and growth of h since the last distribution could have brought particles
+/// that are not ghosts here within reach; otherwise refits the local tree to the current
+/// positions and h (ghost values are copied first). Then finds every owned particle's neighbours.
+/// The decision depends only on particle values, so it is the same on any number of ranks.
+/// Collective.
+template<int D>
+void update_neighbours(simulation<D>& s, bool redistribute = false) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  if (!redistribute) {
+    const auto slack = flecsi_lite::reduce<measure_distribution_slack, slack_reduction>(
+                         f::smoothing_length()(p), f::drift(p), f::distributed_h(p))
+                         .get();
+    redistribute = !ghosts_still_suffice(slack, p.settings().support, s.physics.distribution_skin);
+  }
+  if (redistribute) {
+    p.distribute();
+    flecsi_lite::execute<mark_distributed>(f::smoothing_length()(p), f::drift(p), f::distributed_h(p));
+    ++s.distributions;
+  } else {
+    p.refresh_local_tree();
+  }
+  flecsi_lite::wait_all();  // no pending launch may still read the lists replaced here
+  flecsi_lite::timers::scoped timer("sph::neighbour search");
+  find_neighbours(p, s.neighbours);
+}
+
+/// Density and smoothing length; when some h outgrew the searched reach, searches again with the
+/// grown h and repeats (the same decision on every rank, so results stay rank-count independent).
+/// The search again redistributes only when the ghosts no longer suffice for the grown h.
+template<int D>
+void update_density(simulation<D>& s) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  for (int attempt = 0;; ++attempt) {
+    const double worst =
+      flecsi_lite::reduce<compute_density<D>, flecsi_lite::reduction::max>(
+        s.neighbours, s.physics, f::position()(p), f::mass()(p), f::kind(p), f::smoothing_length()(p),
+        f::density(p), f::omega(p))
+        .get();
+    if (worst <= 1.0) return;
+    if (attempt == 20)
+      throw std::runtime_error("sph: the smoothing length keeps outgrowing the neighbour search (" +
+                               std::to_string(worst) + " times the reach); raise search_margin");
+    ++s.repeated_searches;
+    update_neighbours(s);
+  }
+}
+
+/// Velocity gradients (for the Balsara switch), pressure and sound speed.
+template<int D>
+void update_pressure(simulation<D>& s) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  if (s.physics.balsara)
+    flecsi_lite::execute<compute_velocity_gradients<D>>(
+      s.neighbours, s.physics, f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
+      f::density(p), f::omega(p), f::velocity_divergence(p), f::velocity_curl(p));
+  flecsi_lite::execute<compute_equation_of_state<D>>(s.physics, f::density(p), f::internal_energy(p),
+                                                     f::smoothing_length()(p), f::omega(p),
+                                                     f::velocity_divergence(p), f::velocity_curl(p), f::pressure(p),
+                                                     f::sound_speed(p), f::pressure_term(p), f::balsara(p));
+}
+
+/// Accelerations and du/dt; the next time step (global minimum) becomes s.next_time_step.
+template<int D>
+void update_forces(simulation<D>& s) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  s.next_time_step = flecsi_lite::reduce<compute_forces<D>, flecsi_lite::reduction::min>(
+    s.neighbours, s.physics, f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
+    f::density(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p), f::internal_energy(p), f::balsara(p),
+    f::kind(p), f::acceleration(p), f::internal_energy_rate(p));
+}
+
+template<int D>
+void first_kick_and_drift(simulation<D>& s) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  flecsi_lite::execute<kick_drift<D>>(s.dt, p.space(), f::kind(p), f::position()(p), f::velocity(p),
+                                      f::velocity_half(p), f::internal_energy(p), f::internal_energy_half(p),
+                                      f::acceleration(p), f::internal_energy_rate(p), f::boundary_impulse(p),
+                                      f::boundary_work(p), f::drift(p));
+}
+
+template<int D>
+void second_kick(simulation<D>& s) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  flecsi_lite::execute<kick<D>>(s.dt, f::kind(p), f::velocity_half(p), f::internal_energy_half(p),
+                                f::acceleration(p), f::internal_energy_rate(p), f::velocity(p),
+                                f::internal_energy(p), f::boundary_impulse(p), f::boundary_work(p));
+}
+
+/// The step just taken moves the clock; the next step is the global minimum of the particles'
+/// time steps, shortened to end exactly at end_time. The minimum over ranks is exact, so every
+/// rank count takes the same steps.
+template<int D>
+void choose_time_step(simulation<D>& s, bool advance) {
+  if (advance) {
+    const bool last = s.dt >= s.run.end_time - s.time;
+    s.time = last ? s.run.end_time : s.time + s.dt;
+    ++s.step;
+    s.finished = last || (s.run.max_steps > 0 && s.step >= s.run.max_steps);
+    if (s.finished) return;  // dt stays the last step's, for the reports and the output
+  }
+  double next = s.next_time_step.get();
+  if (next >= std::numeric_limits<double>::max()) next = s.run.end_time - s.time;  // no fluid particle
+  if (!(next > 0))
+    throw std::runtime_error("sph: time step " + std::to_string(next) + " at t = " + std::to_string(s.time) +
+                             " (step " + std::to_string(s.step) + ")");
+  s.dt = std::min(next, s.run.end_time - s.time);
+}
+
+} // namespace flecsph::sph
