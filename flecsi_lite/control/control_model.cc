@@ -58,14 +58,21 @@ void move_next_to(std::vector<std::size_t>& sequence, std::size_t action, std::s
 }
 } // namespace
 
-void model_structure::place_after(action_handle action, const std::string& anchor_name) {
-  auto& point = points_[action.point];
+action_handle model_structure::placement_anchor(action_handle action, const std::string& anchor_name) const {
+  const auto& point = points_[action.point];
   const action_handle anchor = find_action(point.name, anchor_name);
-  auto& placed = point.actions[action.index];
+  const auto& placed = point.actions[action.index];
   if (!placed.placement.empty())
     throw control_error("action '" + placed.name + "' (" + point.name + ") is already placed " + placed.placement);
   if (anchor.index == action.index)
     throw control_error("action '" + placed.name + "' (" + point.name + ") cannot be placed relative to itself");
+  return anchor;
+}
+
+void model_structure::place_after(action_handle action, const std::string& anchor_name) {
+  auto& point = points_[action.point];
+  const action_handle anchor = placement_anchor(action, anchor_name);
+  auto& placed = point.actions[action.index];
   // The anchor's dependents now wait on the new action, which waits on the anchor.
   for (std::size_t a = 0; a < point.actions.size(); ++a) {
     if (a == action.index) continue;
@@ -79,12 +86,8 @@ void model_structure::place_after(action_handle action, const std::string& ancho
 
 void model_structure::place_before(action_handle action, const std::string& anchor_name) {
   auto& point = points_[action.point];
-  const action_handle anchor = find_action(point.name, anchor_name);
+  const action_handle anchor = placement_anchor(action, anchor_name);
   auto& placed = point.actions[action.index];
-  if (!placed.placement.empty())
-    throw control_error("action '" + placed.name + "' (" + point.name + ") is already placed " + placed.placement);
-  if (anchor.index == action.index)
-    throw control_error("action '" + placed.name + "' (" + point.name + ") cannot be placed relative to itself");
   // The new action inherits what the anchor waited on, and the anchor waits on it alone.
   auto& waited = point.actions[anchor.index].after;
   for (std::size_t earlier : waited) placed.after.push_back(earlier);

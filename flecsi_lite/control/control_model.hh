@@ -82,6 +82,9 @@ public:
   std::size_t find_point(const std::string& name) const;
 
 private:
+  /// The anchor `action` may be placed next to; throws when it is placed already or is the anchor.
+  action_handle placement_anchor(action_handle action, const std::string& anchor_name) const;
+
   std::vector<point_info> points_;
   std::vector<cycle_info> cycles_;
 };
