@@ -1,23 +1,113 @@
-// The app frame's main() (frame.hh): options, parameters, the run, and errors as exit statuses.
+// The app frame's main() (frame.hh): options, parameters, the start-up banner, the
+// used-parameters file, the run, and errors as exit statuses.
 #include "flecsi_lite/app/frame.hh"
 
+#include "flecsi_lite/execution/forall.hh"
+#include "flecsi_lite/io/collective_agreement.hh"
 #include "flecsi_lite/io/io_error.hh"
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/runtime/log.hh"
 
+#include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 
+// Set by the top-level CMakeLists.txt on this file only, so that a new commit recompiles nothing else.
+#ifndef FLECSPH_VERSION
+#define FLECSPH_VERSION "unknown"
+#endif
+#ifndef FLECSPH_GIT_DESCRIBE
+#define FLECSPH_GIT_DESCRIBE "unknown"
+#endif
+
 namespace flecsi_lite::app {
+
+const char* version() { return FLECSPH_VERSION; }
+const char* git_describe() { return FLECSPH_GIT_DESCRIBE; }
+
+std::string beside_output(const std::string& output_file, const std::string& program, const std::string& suffix) {
+  if (output_file.empty()) return program + suffix;
+  return std::filesystem::path(output_file).replace_extension().string() + suffix;
+}
+
+namespace {
+/// The frame's own key, "auto" standing for `<output stem>.used.par`.
+struct frame_files {
+  std::string used_parameters_file = "auto";
+};
+
+runtime::parameter_block<frame_files> frame_file_parameters() {
+  runtime::parameter_block<frame_files> block;
+  block.file("used_parameters_file", &frame_files::used_parameters_file,
+             "every key of this run with its value, a complete rerun file (auto: <output stem>.used.par)");
+  return block;
+}
+} // namespace
 
 runtime::parameter_schema schema_of(const definition& app) {
   runtime::parameter_schema schema;
   if (app.declare_parameters) app.declare_parameters(schema);
-  if (app.files) file_parameters(*app.files).declare(schema);
+  if (app.files) {
+    file_parameters(*app.files).declare(schema);
+    frame_file_parameters().declare(schema);
+  }
   return schema;
 }
 
 namespace {
+/// Rank 0: program, version, commit, ranks and threads, before anything runs.
+void print_banner(const definition& app) {
+  log::info() << app.program << " " << version() << " (git " << git_describe() << "): " << runtime::size()
+              << " MPI ranks x " << concurrency() << " threads per rank";
+}
+
+/// Where the used parameters go ("" for nowhere); a path that another file key names too is a
+/// parameter error, since one of the two files would overwrite the other.
+std::string used_parameters_path(const definition& app, const runtime::parameters& p) {
+  const frame_files frame = frame_file_parameters().read(p);
+  const file_settings files = file_parameters(*app.files).read(p);
+  const std::string path = frame.used_parameters_file == "auto"
+                             ? (files.output_file.empty() ? "" : beside_output(files.output_file, app.program, ".used.par"))
+                             : frame.used_parameters_file;
+  if (path.empty()) return path;
+  const std::pair<const char*, std::string> others[] = {{"output_file", files.output_file},
+                                                         {"checkpoint_file", files.checkpoint_file},
+                                                         {"restart_file", files.restart_file},
+                                                         {"initial_data", files.initial_data}};
+  for (const auto& [key, other] : others)
+    if (!other.empty() && std::filesystem::path(other).lexically_normal() == std::filesystem::path(path).lexically_normal())
+      throw runtime::parameter_error("used_parameters_file '" + path + "' is also " + key +
+                                     ": set used_parameters_file to another name (or none)");
+  return path;
+}
+
+/// Rank 0 writes `<path>.partial` and renames it over `path` (never over anything but a regular
+/// file); every rank throws the same io_error when that fails. Collective.
+void write_used_parameters(const definition& app, const std::string& path, const runtime::parameters& p) {
+  io::agree(runtime::communicator(), [&] {
+    if (runtime::rank() != 0) return;
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::file_status existing = fs::symlink_status(path, error);
+    if (fs::exists(existing) && !fs::is_regular_file(existing))
+      throw io::file_error("used_parameters_file '" + path + "' exists and is not a regular file: not replaced");
+    const std::string partial = path + ".partial";
+    {
+      std::ofstream out(partial, std::ios::trunc);
+      out << "# " << app.program << " " << version() << " (git " << git_describe()
+          << "): every parameter of a run, defaults included; rerun with `" << app.program << " " << path << "`\n"
+          << p.resolved_text();
+      out.flush();
+      if (!out) throw io::file_error("cannot write the used_parameters_file '" + partial + "'");
+    }
+    if (std::rename(partial.c_str(), path.c_str()) != 0)
+      throw io::file_error("cannot rename '" + partial + "' to the used_parameters_file '" + path + "'");
+  });
+  log::info() << app.program << ": parameters of this run in " << path;
+}
+
 /// Every option that sets a key, as the --set overrides it stands for, then the --set ones.
 std::vector<std::string> overrides_of(const definition& app, const runtime::options& options) {
   std::vector<std::string> overrides;
@@ -52,6 +142,9 @@ int main(int argc, char** argv, const definition& app) {
   }
   try {
     const auto p = runtime::parameters::load(schema, rt.opts().get("parameters"), overrides_of(app, rt.opts()));
+    print_banner(app);
+    if (app.files && !run_context::control_model_only())
+      if (const std::string path = used_parameters_path(app, p); !path.empty()) write_used_parameters(app, path, p);
     return app.run(run_context(app, p, rt.opts()));
   } catch (const runtime::parameter_error& e) {
     log::error() << e.what();

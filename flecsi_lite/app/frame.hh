@@ -11,6 +11,10 @@
 //   };
 //   int main(int argc, char** argv) { return app::main(argc, argv, heat); }
 //
+// At start-up, rank 0 prints a banner (program, version, git commit, ranks, threads per rank),
+// and apps with files write the used-parameters file: every key with its value, defaults
+// included, a complete rerun file (key used_parameters_file; "auto": `<output stem>.used.par`).
+//
 // Exit statuses: 0 the run (or --help, --parameters-help, --control-model); 1 a check of the app
 // failed; 2 bad options or parameters; 3 any other error (a bad file, an impossible value), each
 // reported on rank 0 with what was wrong.
@@ -85,7 +89,16 @@ private:
   const runtime::options& options_;
 };
 
-/// The schema of `app`: its keys, then the file keys when it has them.
+/// The version of this build (PROJECT_VERSION) and its commit, as `git describe --always --dirty`
+/// gave it at configure time ("unknown" outside a git checkout).
+const char* version();
+const char* git_describe();
+
+/// A file that goes with the output: `<output stem><suffix>` (sod.h5part, ".used.par":
+/// sod.used.par), or `<program><suffix>` when there is no output (`output_file` empty).
+std::string beside_output(const std::string& output_file, const std::string& program, const std::string& suffix);
+
+/// The schema of `app`: its keys, then the file keys and used_parameters_file when it has files.
 runtime::parameter_schema schema_of(const definition& app);
 
 /// Starts the runtime, parses the options, loads the parameters and runs `app` (see the exit
