@@ -12,6 +12,7 @@ flecsi_lite::app::definition frame_definition(const app_definition& app) {
     if (declare_problem) declare_problem(schema);
     physics_parameters().declare(schema);
     run_parameters(run_defaults).declare(schema);
+    statistics_parameters().declare(schema);
   };
   frame.files = app.file_defaults;
   frame.declare_options = app.declare_options;

@@ -1,7 +1,8 @@
 // The frame every SPH app (sod, sedov, ...) shares, so that an app is its problem and its
 // reports: the settings read from the parameters, initial particles from the problem, from an
-// H5Part file or from a checkpoint, the H5Part output at a cadence, checkpoints, and main() on
-// the framework's app frame (flecsi_lite/app.hh).
+// H5Part file or from a checkpoint, the H5Part output at a cadence, checkpoints, the statistics
+// file (statistics.hh), the particles, kernel and EOS in the start-up banner, and main() on the
+// framework's app frame (flecsi_lite/app.hh).
 //
 //   struct my_run : sph::app_state<D> { my::problem problem; };
 //   auto m = sph::make_app_control_model<my_run>({set_domain, create_particles});
@@ -13,6 +14,7 @@
 #include "specialization/sph/particle_input.hh"
 #include "specialization/sph/particle_output.hh"
 #include "specialization/sph/restart.hh"
+#include "specialization/sph/statistics.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/control.hh"
@@ -20,8 +22,14 @@
 #include "flecsi_lite/runtime.hh"
 
 #include <functional>
+#include <cstdint>
+#include <filesystem>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace flecsph::sph {
 
@@ -35,6 +43,9 @@ struct app_state : simulation<D> {
   std::unique_ptr<flecsi_lite::io::h5part_writer> writer;
   /// Root attributes of the output that describe the problem (gamma, initial states, ...).
   flecsi_lite::io::run_state description;
+  statistics_settings statistics_keys;  ///< statistics_file resolved ("auto" replaced; empty: none)
+  statistics_log statistics;
+  double statistics_dt = 0;  ///< the step about to be taken: the dt of the next row
 };
 
 /// Reads the physics, run-control and file keys into `s`; the program's name from the frame.
@@ -46,6 +57,19 @@ void configure(app_state<D>& s, const flecsi_lite::app::run_context& run) {
   s.run = run_parameters().read(p);
   s.files = flecsi_lite::app::file_parameters().read(p);
   s.parameters_text = p.resolved_text();
+  s.statistics_keys = statistics_parameters().read(p);
+  if (s.statistics_keys.file == "auto")
+    s.statistics_keys.file = flecsi_lite::app::beside_output(s.files.output_file, s.program, ".statistics.txt");
+  const std::string& statistics = s.statistics_keys.file;
+  const std::string used = p.get<std::string>("used_parameters_file");
+  const std::pair<const char*, std::string> others[] = {
+    {"output_file", s.files.output_file}, {"checkpoint_file", s.files.checkpoint_file},
+    {"restart_file", s.files.restart_file}, {"initial_data", s.files.initial_data},
+    {"used_parameters_file", used == "auto" ? "" : used}};
+  for (const auto& [key, other] : others)  // one of two files with one name would be lost
+    if (!statistics.empty() && std::filesystem::path(other).lexically_normal() == std::filesystem::path(statistics).lexically_normal())
+      throw flecsi_lite::runtime::parameter_error("statistics_file '" + statistics + "' is also " + key +
+                                                  ": set statistics_file to another name (or none)");
 }
 
 /// What an app adds to the standard model: the domain (box and periodic axes of
@@ -89,6 +113,71 @@ void restart(app_state<D>& s) {
                            << s.files.restart_file << "'";
 }
 
+inline std::uint64_t rank_value(std::uint64_t value) { return value; }
+
+inline std::uint64_t fluid_count(ro<particle_kind> kind) {
+  std::uint64_t count = 0;
+  for (std::size_t a = 0; a < kind.size(); ++a) count += kind(a) == particle_kind::fluid;
+  return count;
+}
+
+/// The banner's SPH line: the particles as created (a lattice may hold fewer than asked for),
+/// per rank once distributed, the kernel and the equation of state.
+template<int D>
+void describe_particles(app_state<D>& s) {
+  using flecsi_lite::reduce;
+  namespace reduction = flecsi_lite::reduction;
+  auto& p = *s.particles;
+  const std::uint64_t owned = p.owned_size();
+  const auto fewest = reduce<rank_value, reduction::min>(owned).get();
+  const auto most = reduce<rank_value, reduction::max>(owned).get();
+  const auto fluid = reduce<fluid_count, reduction::sum>(fields<D>::kind(p)).get();
+  auto line = flecsi_lite::log::info();
+  line << s.program << ": " << p.global_size() << " particles (" << fluid << " fluid, " << p.global_size() - fluid
+       << " walls), " << fewest << " to " << most << " per rank; kernel " << physics::kernel_name(s.physics.kernel)
+       << ", eos " << physics::eos_name(s.physics.eos.type);
+  if (s.physics.eos.type == physics::eos_type::ideal_gas) line << " (gamma " << s.physics.eos.ideal.gamma << ")";
+}
+
+/// Neighbours per particle over all ranks (the progress line's mean, at any step).
+template<int D>
+double mean_neighbours(const app_state<D>& s) {
+  const double total = flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::sum>(s.neighbours).get();
+  return s.particles->global_size() ? total / double(s.particles->global_size()) : 0.0;
+}
+
+/// The first row of a new run; a restart writes none for its restart step (the run it continues did).
+template<int D>
+void open_statistics(app_state<D>& s) {
+  s.statistics_dt = s.dt;
+  if (s.statistics_keys.file.empty()) return;
+  const std::vector<std::string> description = {
+    s.program + " statistics: a row every " + std::to_string(s.statistics_keys.every) +
+      " steps and at the last one, written by rank 0 and flushed row by row",
+    s.program + " " + flecsi_lite::app::version() + " (git " + flecsi_lite::app::git_describe() + "), " +
+      std::to_string(flecsi_lite::runtime::size()) + " MPI ranks; no gravity, so no potential energy column",
+    "parameters:"};
+  std::string header;
+  {
+    std::vector<std::string> lines = description;
+    std::istringstream parameters(s.parameters_text);
+    for (std::string line; std::getline(parameters, line);) lines.push_back("  " + line);
+    header = statistics_header<D>(lines);
+  }
+  s.statistics.open(s.statistics_keys.file, header, s.restarted ? std::optional<long>(s.step) : std::nullopt);
+  if (!s.restarted) s.statistics.write(statistics_line<D>(s.step, s.time, 0.0, measure_conserved(s), mean_neighbours(s)));
+}
+
+/// A row every statistics_every steps and at the last; the totals of the conserved line when it
+/// measured them at this step.
+template<int D>
+void statistics_row(app_state<D>& s) {
+  const double dt = std::exchange(s.statistics_dt, s.dt);
+  if (!s.statistics.is_open() || !(s.finished || s.step % s.statistics_keys.every == 0)) return;
+  const conserved_totals<D> totals = s.totals_step == s.step ? s.totals : measure_conserved(s);
+  s.statistics.write(statistics_line<D>(s.step, s.time, dt, totals, mean_neighbours(s)));
+}
+
 template<int D>
 void checkpoint(app_state<D>& s) {
   const long every = s.files.checkpoint_every;
@@ -112,7 +201,10 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
     else if (!s.files.initial_data.empty()) detail::read_initial_particles<D>(s);
     else problem.create_particles(s);
   });
+  m.action("initialize", "describe_particles", [](State& s) { detail::describe_particles<D>(s); }).after("search");
   m.action("initialize", "open_output", [](State& s) { detail::open_output<D>(static_cast<base&>(s)); });
+  m.action("initialize", "open_statistics", [](State& s) { detail::open_statistics<D>(s); }).after("diagnostics");
+  m.action("analyze", "statistics", [](State& s) { detail::statistics_row<D>(s); }).after("conserved_quantities");
   auto output = m.action("output", "h5part", [](State& s) {
     if (s.writer && (s.finished || s.time >= s.next_output)) detail::write_output_step<D>(s);
   });
