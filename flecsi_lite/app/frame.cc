@@ -32,6 +32,16 @@ std::string beside_output(const std::string& output_file, const std::string& pro
   return std::filesystem::path(output_file).replace_extension().string() + suffix;
 }
 
+void check_distinct_file(const std::string& key, const std::string& path,
+                         const std::vector<std::pair<std::string, std::string>>& others) {
+  if (path.empty()) return;
+  const auto normal = [](const std::string& name) { return std::filesystem::path(name).lexically_normal(); };
+  for (const auto& [other_key, other] : others)
+    if (!other.empty() && normal(other) == normal(path))
+      throw runtime::parameter_error(key + " '" + path + "' is also " + other_key + ": set " + key +
+                                     " to another name (or none)");
+}
+
 namespace {
 /// The frame's own key, "auto" standing for `<output stem>.used.par`.
 struct frame_files {
@@ -45,6 +55,13 @@ runtime::parameter_block<frame_files> frame_file_parameters() {
   return block;
 }
 } // namespace
+
+std::string used_parameters_file(const std::string& program, const runtime::parameters& p) {
+  const std::string path = frame_file_parameters().read(p).used_parameters_file;
+  if (path != "auto") return path;
+  const file_settings files = file_parameters().read(p);
+  return files.output_file.empty() ? "" : beside_output(files.output_file, program, ".used.par");
+}
 
 runtime::parameter_schema schema_of(const definition& app) {
   runtime::parameter_schema schema;
@@ -66,20 +83,13 @@ void print_banner(const definition& app) {
 /// Where the used parameters go ("" for nowhere); a path that another file key names too is a
 /// parameter error, since one of the two files would overwrite the other.
 std::string used_parameters_path(const definition& app, const runtime::parameters& p) {
-  const frame_files frame = frame_file_parameters().read(p);
   const file_settings files = file_parameters(*app.files).read(p);
-  const std::string path = frame.used_parameters_file == "auto"
-                             ? (files.output_file.empty() ? "" : beside_output(files.output_file, app.program, ".used.par"))
-                             : frame.used_parameters_file;
-  if (path.empty()) return path;
-  const std::pair<const char*, std::string> others[] = {{"output_file", files.output_file},
-                                                         {"checkpoint_file", files.checkpoint_file},
-                                                         {"restart_file", files.restart_file},
-                                                         {"initial_data", files.initial_data}};
-  for (const auto& [key, other] : others)
-    if (!other.empty() && std::filesystem::path(other).lexically_normal() == std::filesystem::path(path).lexically_normal())
-      throw runtime::parameter_error("used_parameters_file '" + path + "' is also " + key +
-                                     ": set used_parameters_file to another name (or none)");
+  const std::string path = used_parameters_file(app.program, p);
+  check_distinct_file("used_parameters_file", path,
+                      {{"output_file", files.output_file},
+                       {"checkpoint_file", files.checkpoint_file},
+                       {"restart_file", files.restart_file},
+                       {"initial_data", files.initial_data}});
   return path;
 }
 

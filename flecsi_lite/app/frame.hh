@@ -29,6 +29,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flecsi_lite::app {
@@ -97,6 +98,15 @@ const char* git_describe();
 /// A file that goes with the output: `<output stem><suffix>` (sod.h5part, ".used.par":
 /// sod.used.par), or `<program><suffix>` when there is no output (`output_file` empty).
 std::string beside_output(const std::string& output_file, const std::string& program, const std::string& suffix);
+
+/// The used-parameters file of a run of `program` with `p` (keys of an app with files):
+/// used_parameters_file with "auto" resolved; empty: none.
+std::string used_parameters_file(const std::string& program, const runtime::parameters& p);
+
+/// Throws parameter_error when `path`, the value of `key`, names the same file as one of `others`
+/// (key and value; an empty value is none): one of two files with one name would be lost.
+void check_distinct_file(const std::string& key, const std::string& path,
+                         const std::vector<std::pair<std::string, std::string>>& others);
 
 /// The schema of `app`: its keys, then the file keys and used_parameters_file when it has files.
 runtime::parameter_schema schema_of(const definition& app);

@@ -23,7 +23,6 @@
 
 #include <functional>
 #include <cstdint>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -48,7 +47,8 @@ struct app_state : simulation<D> {
   double statistics_dt = 0;  ///< the step about to be taken: the dt of the next row
 };
 
-/// Reads the physics, run-control and file keys into `s`; the program's name from the frame.
+/// Reads the physics, run-control, statistics and file keys into `s`; the program's name from the
+/// frame. A statistics_file named like another file of the run is a parameter_error.
 template<int D>
 void configure(app_state<D>& s, const flecsi_lite::app::run_context& run) {
   const auto& p = run.parameters();
@@ -60,16 +60,13 @@ void configure(app_state<D>& s, const flecsi_lite::app::run_context& run) {
   s.statistics_keys = statistics_parameters().read(p);
   if (s.statistics_keys.file == "auto")
     s.statistics_keys.file = flecsi_lite::app::beside_output(s.files.output_file, s.program, ".statistics.txt");
-  const std::string& statistics = s.statistics_keys.file;
-  const std::string used = p.get<std::string>("used_parameters_file");
-  const std::pair<const char*, std::string> others[] = {
-    {"output_file", s.files.output_file}, {"checkpoint_file", s.files.checkpoint_file},
-    {"restart_file", s.files.restart_file}, {"initial_data", s.files.initial_data},
-    {"used_parameters_file", used == "auto" ? "" : used}};
-  for (const auto& [key, other] : others)  // one of two files with one name would be lost
-    if (!statistics.empty() && std::filesystem::path(other).lexically_normal() == std::filesystem::path(statistics).lexically_normal())
-      throw flecsi_lite::runtime::parameter_error("statistics_file '" + statistics + "' is also " + key +
-                                                  ": set statistics_file to another name (or none)");
+  namespace app = flecsi_lite::app;
+  app::check_distinct_file("statistics_file", s.statistics_keys.file,
+                           {{"output_file", s.files.output_file},
+                            {"checkpoint_file", s.files.checkpoint_file},
+                            {"restart_file", s.files.restart_file},
+                            {"initial_data", s.files.initial_data},
+                            {"used_parameters_file", app::used_parameters_file(s.program, p)}});
 }
 
 /// What an app adds to the standard model: the domain (box and periodic axes of
@@ -165,7 +162,8 @@ void open_statistics(app_state<D>& s) {
     header = statistics_header<D>(lines);
   }
   s.statistics.open(s.statistics_keys.file, header, s.restarted ? std::optional<long>(s.step) : std::nullopt);
-  if (!s.restarted) s.statistics.write(statistics_line<D>(s.step, s.time, 0.0, measure_conserved(s), mean_neighbours(s)));
+  if (!s.restarted)
+    s.statistics.write(statistics_line<D>(s.step, s.time, 0.0, measure_conserved(s), mean_neighbours(s)));
 }
 
 /// A row every statistics_every steps and at the last; the totals of the conserved line when it

@@ -28,7 +28,8 @@ namespace flecsph::sph {
 
 /// The keys statistics_file and statistics_every.
 struct statistics_settings {
-  std::string file = "auto";  ///< "auto": <output stem>.statistics.txt (<program>.statistics.txt without output); empty: none
+  /// "auto": <output stem>.statistics.txt (<program>.statistics.txt without output); empty: none.
+  std::string file = "auto";
   long every = 1;             ///< steps between rows; the first and the last step always have one
 };
 
@@ -80,7 +81,8 @@ std::string statistics_header(const std::vector<std::string>& description) {
   const auto columns = statistics_columns<D>();
   std::string names;
   for (std::size_t c = 0; c < columns.size(); ++c) {
-    out << "# " << std::setw(3) << c + 1 << " " << columns[c].name << " [" << columns[c].unit << "]: " << columns[c].meaning << "\n";
+    out << "# " << std::setw(3) << c + 1 << " " << columns[c].name << " [" << columns[c].unit
+        << "]: " << columns[c].meaning << "\n";
     names += (c ? " " : "") + columns[c].name;
   }
   out << "# " << names << "\n";
@@ -123,7 +125,8 @@ public:
       std::error_code error;
       const fs::file_status existing = fs::symlink_status(path, error);
       if (fs::exists(existing) && !fs::is_regular_file(existing))
-        throw flecsi_lite::io::file_error("statistics_file '" + path + "' exists and is not a regular file: not replaced");
+        throw flecsi_lite::io::file_error("statistics_file '" + path +
+                                          "' exists and is not a regular file: not replaced");
       std::string kept = header;
       if (restart_step && fs::exists(existing)) kept = rows_up_to(path, header, *restart_step);
       const std::string partial = path + ".partial";
@@ -147,7 +150,8 @@ public:
     if (!open_) return;
     flecsi_lite::io::agree(flecsi_lite::runtime::communicator(), [&] {
       if (flecsi_lite::runtime::rank() != 0) return;
-      if (!(out_ << line).flush()) throw flecsi_lite::io::file_error("cannot write to the statistics_file '" + path_ + "'");
+      if (!(out_ << line).flush())
+        throw flecsi_lite::io::file_error("cannot write to the statistics_file '" + path_ + "'");
     });
   }
 
@@ -180,7 +184,8 @@ private:
   static long row_step(const std::string& path, const std::string& line) {
     std::istringstream in(line);
     long step = 0;
-    if (!(in >> step)) throw flecsi_lite::io::file_error("statistics_file '" + path + "': a row that is not a step: '" + line + "'");
+    if (!(in >> step))
+      throw flecsi_lite::io::file_error("statistics_file '" + path + "': a row that is not a step: '" + line + "'");
     return step;
   }
 
