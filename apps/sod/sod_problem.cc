@@ -82,16 +82,16 @@ void check_layout(const problem& problem, const sph::physics_settings& physics, 
   const double layer_right = std::pow(double(layout.across_right), layout.dimension - 1);
   checked_count("sod", "particles per layer on the left", layer_left, "tube_width, " + tube_keys);
   checked_count("sod", "particles per layer on the right", layer_right, "tube_width, " + tube_keys);
-  checked_count("sod", "particles of the tube",
-                double(layout.walls_left + layout.left) * layer_left + double(layout.right + layout.walls_right) * layer_right,
-                "wall_layers, search_margin, eta, tube_width, " + tube_keys);
+  const double particles = double(layout.walls_left + layout.left) * layer_left +
+                           double(layout.right + layout.walls_right) * layer_right;
+  checked_count("sod", "particles of the tube", particles, "wall_layers, search_margin, eta, tube_width, " + tube_keys);
   checked_positive("sod", "particle mass", layout.mass, tube_keys);
   checked_length("sod", "spacing along x on the left", layout.spacing_left, tube_keys);
   checked_length("sod", "spacing along x on the right", layout.spacing_right, tube_keys);
-  checked_length("sod", "smoothing length on the left", initial_h(physics, layout.dimension, layout.mass, problem.rho_left),
-                   "eta, " + tube_keys);
+  checked_length("sod", "smoothing length on the left",
+                 initial_h(physics, layout.dimension, layout.mass, problem.rho_left), "eta, " + tube_keys);
   checked_length("sod", "smoothing length on the right",
-                   initial_h(physics, layout.dimension, layout.mass, problem.rho_right), "eta, " + tube_keys);
+                 initial_h(physics, layout.dimension, layout.mass, problem.rho_right), "eta, " + tube_keys);
   // The particles' extent beyond the interface on each side, walls included (the domain's box).
   const double reach_left = double(layout.left + layout.walls_left + 1) * layout.spacing_left;
   const double reach_right = double(layout.right + layout.walls_right + 1) * layout.spacing_right;
@@ -111,36 +111,37 @@ void check_layout(const problem& problem, const sph::physics_settings& physics, 
 tube_layout layout_of(const problem& problem, const sph::physics_settings& physics, int dimension) {
   tube_layout layout;
   layout.dimension = dimension;
-  const double length_left = checked_length("sod", "length left of the interface",
-                                              problem.x_interface - problem.x_min, left_keys);
-  const double length_right = checked_length("sod", "length right of the interface",
-                                               problem.x_max - problem.x_interface, right_keys);
+  const double length_left =
+    checked_length("sod", "length left of the interface", problem.x_interface - problem.x_min, left_keys);
+  const double length_right =
+    checked_length("sod", "length right of the interface", problem.x_max - problem.x_interface, right_keys);
   if (dimension == 1) {
     const double mass_left = checked_positive("sod", "mass left of the interface", problem.rho_left * length_left,
                                               "rho_left, " + left_keys);
     const double mass_right = checked_positive("sod", "mass right of the interface", problem.rho_right * length_right,
                                                "rho_right, " + right_keys);
     const double total = checked_positive("sod", "mass of the tube", mass_left + mass_right, tube_keys);
-    layout.right = std::max<std::int64_t>(
-      1, checked_count("sod", "particles right of the interface", double(problem.particles) * mass_right / total, tube_keys));
-    layout.left = std::max<std::int64_t>(
-      1, checked_count("sod", "particles left of the interface", double(layout.right) * mass_left / mass_right, tube_keys));
+    const double right = double(problem.particles) * mass_right / total;
+    layout.right =
+      std::max<std::int64_t>(1, checked_count("sod", "particles right of the interface", right, tube_keys));
+    const double left = double(layout.right) * mass_left / mass_right;
+    layout.left = std::max<std::int64_t>(1, checked_count("sod", "particles left of the interface", left, tube_keys));
     layout.mass = total / double(layout.left + layout.right);
   } else {
     layout.body_centred = problem.lattice == lattice_type::body_centred;
     // Mean spacings (m/rho)^(1/D) and cells (of 2 particles when body-centred) on each side.
-    const double spacing_left = length_left / double(problem.particles);
-    const double spacing_right = checked_length(
-      "sod", "mean spacing on the right", spacing_left * std::pow(problem.rho_left / problem.rho_right, 1.0 / dimension),
-      tube_keys);
+    const double spacing_left =
+      checked_length("sod", "mean spacing on the left", length_left / double(problem.particles), tube_keys);
+    const double contrast = std::pow(problem.rho_left / problem.rho_right, 1.0 / dimension);
+    const double spacing_right = checked_length("sod", "mean spacing on the right", spacing_left * contrast, tube_keys);
     const double cell = std::pow(layout.body_centred ? 2.0 : 1.0, 1.0 / dimension);
     const double cell_left = cell * spacing_left, cell_right = cell * spacing_right;
     // Wide enough that the reach 2 (1 + margin) h stays below half the period as h grows: about
     // 8 mean spacings of the coarser side, in whole cells of that side.
     const double coarse_cell = cell * std::max(spacing_left, spacing_right);
     layout.width = checked_length("sod", "transverse period",
-                                    problem.width > 0 ? problem.width : double(std::llround(8 / cell)) * coarse_cell,
-                                    "tube_width, " + tube_keys);
+                                  problem.width > 0 ? problem.width : double(std::llround(8 / cell)) * coarse_cell,
+                                  "tube_width, " + tube_keys);
     layout.across_left = std::max<std::int64_t>(
       1, checked_count("sod", "particles across on the left", layout.width / cell_left, "tube_width, " + tube_keys));
     layout.across_right = std::max<std::int64_t>(
