@@ -29,9 +29,15 @@ struct problem {
 /// sph::physics_parameters).
 const flecsi_lite::runtime::parameter_block<problem>& problem_parameters();
 
-/// The domain: the periodic box [-L/2, L/2]^D.
+/// Checks what the keys imply in `dimension` dimensions: a particle count of at most 2^40, a box,
+/// spacing and h within the lengths the SPH tasks handle, and finite, positive masses and
+/// energies; throws parameter_error naming the keys otherwise.
+void check_problem(const problem& problem, const sph::physics_settings& physics, int dimension);
+
+/// The domain: the periodic box [-L/2, L/2]^D, after check_problem.
 template<int D>
 void set_periodic_box(sph::simulation<D>& s, const problem& problem) {
+  check_problem(problem, s.physics, D);
   flecsi_lite::topology::ntree::box<D> box;
   box.lo.fill(-0.5 * problem.side);
   box.hi.fill(0.5 * problem.side);

@@ -5,6 +5,8 @@
 #include "flecsi_lite/runtime.hh"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace sod {
 
@@ -51,6 +53,14 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
 }
 
 namespace {
+using sph::checked_count;
+using sph::checked_length;
+using sph::checked_positive;
+
+// The keys each derived quantity comes from, named in the errors of its checks.
+const std::string left_keys = "x_min, x_interface", right_keys = "x_interface, x_max";
+const std::string tube_keys = "particles, rho_left, rho_right, x_min, x_interface, x_max";
+
 /// Smoothing length of a particle of mass m at density rho.
 double initial_h(const sph::physics_settings& physics, int dimension, double m, double rho) {
   return physics.eta * std::pow(m / rho, 1.0 / dimension);
@@ -59,39 +69,88 @@ double initial_h(const sph::physics_settings& physics, int dimension, double m, 
 /// Wall layers: a fluid particle next to a wall reaches 2 (1 + margin) h of walls, and those
 /// walls need the same depth of walls behind them for a complete density sum.
 std::int64_t wall_layers(const problem& problem, const sph::physics_settings& physics, double h, double spacing) {
-  if (problem.wall_layers > 0) return problem.wall_layers;
+  if (problem.wall_layers > 0) return checked_count("sod", "wall layers", double(problem.wall_layers), "wall_layers");
   const double reach = 2 * flecsph::physics::kernel_support * (1 + physics.search_margin) * h / spacing;
-  return static_cast<std::int64_t>(std::ceil(reach)) + 2;
+  return checked_count("sod", "wall layers (the kernel's reach)", std::ceil(reach) + 2,
+                       "eta, search_margin, " + tube_keys);
+}
+
+/// Every count, length, mass and energy of `layout` (and the particles' internal energies) in
+/// range: no count can overflow and no position, mass or energy is infinite or zero.
+void check_layout(const problem& problem, const sph::physics_settings& physics, const tube_layout& layout) {
+  const double layer_left = std::pow(double(layout.across_left), layout.dimension - 1);
+  const double layer_right = std::pow(double(layout.across_right), layout.dimension - 1);
+  checked_count("sod", "particles per layer on the left", layer_left, "tube_width, " + tube_keys);
+  checked_count("sod", "particles per layer on the right", layer_right, "tube_width, " + tube_keys);
+  const double particles = double(layout.walls_left + layout.left) * layer_left +
+                           double(layout.right + layout.walls_right) * layer_right;
+  checked_count("sod", "particles of the tube", particles, "wall_layers, search_margin, eta, tube_width, " + tube_keys);
+  checked_positive("sod", "particle mass", layout.mass, tube_keys);
+  checked_length("sod", "spacing along x on the left", layout.spacing_left, tube_keys);
+  checked_length("sod", "spacing along x on the right", layout.spacing_right, tube_keys);
+  checked_length("sod", "smoothing length on the left",
+                 initial_h(physics, layout.dimension, layout.mass, problem.rho_left), "eta, " + tube_keys);
+  checked_length("sod", "smoothing length on the right",
+                 initial_h(physics, layout.dimension, layout.mass, problem.rho_right), "eta, " + tube_keys);
+  // The particles' extent beyond the interface on each side, walls included (the domain's box).
+  const double reach_left = double(layout.left + layout.walls_left + 1) * layout.spacing_left;
+  const double reach_right = double(layout.right + layout.walls_right + 1) * layout.spacing_right;
+  checked_length("sod", "extent of the particles left of the interface", reach_left, "wall_layers, " + tube_keys);
+  checked_length("sod", "extent of the particles right of the interface", reach_right, "wall_layers, " + tube_keys);
+  checked_length("sod", "extent of the tube with its walls", reach_left + reach_right, "wall_layers, " + tube_keys);
+  checked_length("sod", "farthest coordinate of a particle",
+                 std::fabs(problem.x_interface) + std::max(reach_left, reach_right), "wall_layers, " + tube_keys);
+  const auto& gas = physics.eos.ideal;
+  checked_positive("sod", "internal energy on the left", gas.internal_energy(problem.rho_left, problem.p_left),
+                   "rho_left, p_left, gamma");
+  checked_positive("sod", "internal energy on the right", gas.internal_energy(problem.rho_right, problem.p_right),
+                   "rho_right, p_right, gamma");
 }
 } // namespace
 
 tube_layout layout_of(const problem& problem, const sph::physics_settings& physics, int dimension) {
   tube_layout layout;
   layout.dimension = dimension;
-  const double length_left = problem.x_interface - problem.x_min, length_right = problem.x_max - problem.x_interface;
+  const double length_left =
+    checked_length("sod", "length left of the interface", problem.x_interface - problem.x_min, left_keys);
+  const double length_right =
+    checked_length("sod", "length right of the interface", problem.x_max - problem.x_interface, right_keys);
   if (dimension == 1) {
-    const double mass_left = problem.rho_left * length_left, mass_right = problem.rho_right * length_right;
-    const double total = mass_left + mass_right;
-    layout.right = std::max<std::int64_t>(1, std::llround(double(problem.particles) * mass_right / total));
-    layout.left = std::max<std::int64_t>(1, std::llround(double(layout.right) * mass_left / mass_right));
+    const double mass_left = checked_positive("sod", "mass left of the interface", problem.rho_left * length_left,
+                                              "rho_left, " + left_keys);
+    const double mass_right = checked_positive("sod", "mass right of the interface", problem.rho_right * length_right,
+                                               "rho_right, " + right_keys);
+    const double total = checked_positive("sod", "mass of the tube", mass_left + mass_right, tube_keys);
+    const double right = double(problem.particles) * mass_right / total;
+    layout.right =
+      std::max<std::int64_t>(1, checked_count("sod", "particles right of the interface", right, tube_keys));
+    const double left = double(layout.right) * mass_left / mass_right;
+    layout.left = std::max<std::int64_t>(1, checked_count("sod", "particles left of the interface", left, tube_keys));
     layout.mass = total / double(layout.left + layout.right);
   } else {
     layout.body_centred = problem.lattice == lattice_type::body_centred;
     // Mean spacings (m/rho)^(1/D) and cells (of 2 particles when body-centred) on each side.
-    const double spacing_left = length_left / double(problem.particles);
-    const double spacing_right = spacing_left * std::pow(problem.rho_left / problem.rho_right, 1.0 / dimension);
+    const double spacing_left =
+      checked_length("sod", "mean spacing on the left", length_left / double(problem.particles), tube_keys);
+    const double contrast = std::pow(problem.rho_left / problem.rho_right, 1.0 / dimension);
+    const double spacing_right = checked_length("sod", "mean spacing on the right", spacing_left * contrast, tube_keys);
     const double cell = std::pow(layout.body_centred ? 2.0 : 1.0, 1.0 / dimension);
     const double cell_left = cell * spacing_left, cell_right = cell * spacing_right;
     // Wide enough that the reach 2 (1 + margin) h stays below half the period as h grows: about
     // 8 mean spacings of the coarser side, in whole cells of that side.
     const double coarse_cell = cell * std::max(spacing_left, spacing_right);
-    layout.width = problem.width > 0 ? problem.width : double(std::llround(8 / cell)) * coarse_cell;
-    layout.across_left = std::max<std::int64_t>(1, std::llround(layout.width / cell_left));
-    layout.across_right = std::max<std::int64_t>(1, std::llround(layout.width / cell_right));
+    layout.width = checked_length("sod", "transverse period",
+                                  problem.width > 0 ? problem.width : double(std::llround(8 / cell)) * coarse_cell,
+                                  "tube_width, " + tube_keys);
+    layout.across_left = std::max<std::int64_t>(
+      1, checked_count("sod", "particles across on the left", layout.width / cell_left, "tube_width, " + tube_keys));
+    layout.across_right = std::max<std::int64_t>(
+      1, checked_count("sod", "particles across on the right", layout.width / cell_right, "tube_width, " + tube_keys));
     layout.across_spacing_left = layout.width / double(layout.across_left);
     layout.across_spacing_right = layout.width / double(layout.across_right);
     layout.mass = problem.rho_left * std::pow(spacing_left, dimension);
   }
+  checked_positive("sod", "particle mass", layout.mass, tube_keys);
   const auto across_area = [&](double across) { return std::pow(across, dimension - 1); };
   layout.spacing_left = layout.mass / (problem.rho_left * across_area(layout.across_spacing_left));
   layout.spacing_right = layout.mass / (problem.rho_right * across_area(layout.across_spacing_right));
@@ -99,13 +158,20 @@ tube_layout layout_of(const problem& problem, const sph::physics_settings& physi
     layout.spacing_left = layout.mass / problem.rho_left;
     layout.spacing_right = layout.mass / problem.rho_right;
   } else {
-    layout.left = std::max<std::int64_t>(1, std::llround(length_left / layout.spacing_left));
-    layout.right = std::max<std::int64_t>(1, std::llround(length_right / layout.spacing_right));
+    checked_length("sod", "spacing along x on the left", layout.spacing_left, "tube_width, " + tube_keys);
+    checked_length("sod", "spacing along x on the right", layout.spacing_right, "tube_width, " + tube_keys);
+    layout.left = std::max<std::int64_t>(
+      1, checked_count("sod", "layers left of the interface", length_left / layout.spacing_left, tube_keys));
+    layout.right = std::max<std::int64_t>(
+      1, checked_count("sod", "layers right of the interface", length_right / layout.spacing_right, tube_keys));
   }
+  checked_length("sod", "spacing along x on the left", layout.spacing_left, tube_keys);
+  checked_length("sod", "spacing along x on the right", layout.spacing_right, tube_keys);
   layout.walls_left = wall_layers(problem, physics, initial_h(physics, dimension, layout.mass, problem.rho_left),
                                   layout.spacing_left);
   layout.walls_right = wall_layers(problem, physics, initial_h(physics, dimension, layout.mass, problem.rho_right),
                                    layout.spacing_right);
+  check_layout(problem, physics, layout);
   return layout;
 }
 

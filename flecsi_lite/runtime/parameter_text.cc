@@ -9,6 +9,25 @@
 #include <sstream>
 
 namespace flecsi_lite::runtime::detail {
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\n' && text[i] != '\r') continue;
+    lines.push_back(text.substr(start, i - start));
+    if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;  // CRLF: one line end
+    start = i + 1;
+  }
+  if (start < text.size()) lines.push_back(text.substr(start));
+  return lines;
+}
+
+std::string excerpt(const std::string& text) {
+  constexpr std::size_t shown = 60;
+  if (text.size() <= shown + 20) return text;
+  return text.substr(0, shown) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
 std::string trim(const std::string& text) {
   const auto first = text.find_first_not_of(" \t\r\n\f\v");
   if (first == std::string::npos) return "";

@@ -14,6 +14,7 @@
 
 namespace flecsi_lite::runtime {
 
+using detail::excerpt;
 using detail::is_key;
 using detail::strip_comment;
 using detail::trim;
@@ -36,20 +37,29 @@ parameters parameters::parse(const parameter_schema& schema, const std::string& 
       message += "; did you mean '" + near + "'?";
     return parameter_error(message);
   };
+  // What every assignment, in the file or on the command line, must be before its key is looked up.
+  const auto check_assignment = [](const std::string& where, const std::string& key, const std::string& value) {
+    if (key.size() > detail::longest_key)
+      throw parameter_error(where + ": key '" + excerpt(key) + "' is longer than " +
+                            std::to_string(detail::longest_key) + " characters");
+    if (!value.empty() && value.front() == '=')
+      throw parameter_error(where + ": the value of key '" + key + "' starts with '=' ('" + excerpt(value) +
+                            "'): write one '=' between key and value");
+  };
 
   std::map<std::string, int> first_line;
-  std::istringstream lines(text);
   int number = 0;
-  for (std::string raw; std::getline(lines, raw);) {
+  for (const std::string& raw : detail::split_lines(text)) {
     ++number;
     const std::string where = origin_of_file + ":" + std::to_string(number);
     const std::string line = trim(strip_comment(raw));
     if (line.empty()) continue;
     const auto equals = line.find('=');
     const std::string key = equals == std::string::npos ? "" : trim(line.substr(0, equals));
+    const std::string value = equals == std::string::npos ? "" : trim(line.substr(equals + 1));
+    check_assignment(where, key, value);
     if (!is_key(key))
-      throw parameter_error(where + ": malformed line '" + trim(raw) + "' (expected 'key = value')");
-    const std::string value = trim(line.substr(equals + 1));
+      throw parameter_error(where + ": malformed line '" + excerpt(trim(raw)) + "' (expected 'key = value')");
     const parameter_declaration* declaration = schema.find(key);
     if (!declaration) throw unknown_key(where, key);
     if (auto first = first_line.find(key); first != first_line.end())
@@ -66,13 +76,14 @@ parameters parameters::parse(const parameter_schema& schema, const std::string& 
   }
 
   for (const auto& assignment : overrides) {
-    const std::string where = "command line (--set " + assignment + ")";
+    const std::string where = "command line (--set " + excerpt(assignment) + ")";
     const auto equals = assignment.find('=');
     const std::string key = equals == std::string::npos ? "" : trim(assignment.substr(0, equals));
+    const std::string value = equals == std::string::npos ? "" : trim(assignment.substr(equals + 1));
+    check_assignment(where, key, value);
     if (!is_key(key)) throw parameter_error(where + ": expected key=value");
     const parameter_declaration* declaration = schema.find(key);
     if (!declaration) throw unknown_key(where, key);
-    const std::string value = trim(assignment.substr(equals + 1));
     if (value.empty()) throw parameter_error(where + ": key '" + key + "' has no value");
     std::string problem;
     const auto interpreted = declaration->interpret(value, problem);

@@ -1,8 +1,9 @@
-// Parameter files in the style of FleCSPH's .par files: `key = value` lines, `#` comments (also
-// after a value), blank lines; a schema declared by the application gives every key its type,
-// default (or none: required), allowed range or choices and a one-line description. Any key can
-// be overridden on the command line (--set key=value, applied after the file). Settings structs
-// declare their keys once, bound to their members, with parameter_block (parameter_block.hh).
+// Parameter files in the style of FleCSPH's .par files: `key = value` lines (ended by LF, CRLF or
+// a lone CR), `#` comments (also after a value), blank lines; a schema declared by the application
+// gives every key its type, default (or none: required), allowed range or choices and a one-line
+// description. Any key can be overridden on the command line (--set key=value, applied after the
+// file). Settings structs declare their keys once, bound to their members, with parameter_block
+// (parameter_block.hh).
 //
 //   parameter_schema schema;
 //   schema.real("gamma", "adiabatic index").default_value(5.0 / 3).range(1, 3);
@@ -13,6 +14,7 @@
 //   double gamma = p.get<double>("gamma");
 //
 // Every mistake in the input (unknown key, with the nearest valid key suggested; malformed line;
+// a value starting with '=' (`key == 3`); a key longer than 200 characters, without suggestion;
 // key given twice in the file; value of the wrong type; out of range or not among the choices;
 // missing required key; missing or unreadable file) throws parameter_error, whose message names
 // the file and line (or the command-line argument), the key and the bad value. Mistakes of the

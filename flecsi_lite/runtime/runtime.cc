@@ -1,3 +1,5 @@
+// The runtime of a flecsi_lite program (runtime.hh): MPI and Kokkos start-up and shut-down, the
+// standard options, and the checks of what they name (a --trace file that cannot be written).
 #include "flecsi_lite/runtime/runtime.hh"
 
 #include "flecsi_lite/runtime/context.hh"
@@ -6,7 +8,11 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <vector>
 
@@ -15,6 +21,30 @@ namespace {
 settings global_settings;
 MPI_Comm framework_comm = MPI_COMM_NULL;
 std::vector<std::function<void()>> finalizers;
+
+/// Why rank 0 could not write `path` ("" when it can): the trace is written only at the end, so
+/// the check opens the file now (without truncating an existing one, and removing one it created).
+std::string unwritable_reason(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return "it is a directory";
+  const bool existed = std::filesystem::exists(path, error);
+  std::ofstream out(path, std::ios::app);
+  if (!out) return std::strerror(errno);
+  out.close();
+  if (!existed) std::filesystem::remove(path, error);
+  return "";
+}
+
+/// The same verdict on every rank: rank 0 checks, the others receive its reason.
+std::string trace_problem(const std::string& path) {
+  std::string reason;
+  if (rank() == 0) reason = unwritable_reason(path);
+  int length = static_cast<int>(reason.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, communicator());
+  reason.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(reason.data(), length, MPI_CHAR, 0, communicator());
+  return reason;
+}
 } // namespace
 
 const settings& current_settings() { return global_settings; }
@@ -54,6 +84,15 @@ runtime::runtime(int& argc, char**& argv, options program_options)
   if (options_.has("control-model"))
     global_settings.control_model_file = global_settings.program + "-control-model.dot";
   global_settings.trace_file = options_.get("trace");
+  if (!global_settings.trace_file.empty()) {
+    if (const auto reason = trace_problem(global_settings.trace_file); !reason.empty()) {
+      if (rank() == 0)
+        std::cerr << global_settings.program << ": cannot write the --trace file '" << global_settings.trace_file
+                  << "': " << reason << "\n";
+      exit_code_ = 2;
+      return;
+    }
+  }
   global_settings.timers = !options_.has("no-timers");
 }
 

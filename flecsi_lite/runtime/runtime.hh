@@ -34,7 +34,8 @@ public:
   runtime& operator=(const runtime&) = delete;
   ~runtime();
 
-  /// False after --help or a bad option: main should return exit_code().
+  /// False after --help, a bad option or a --trace file that cannot be written (exit status 2):
+  /// main should return exit_code().
   bool proceed() const { return exit_code_ < 0; }
   int exit_code() const { return exit_code_ < 0 ? 0 : exit_code_; }
   const options& opts() const { return options_; }

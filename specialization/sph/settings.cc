@@ -1,6 +1,10 @@
 // Parameter-file keys of the SPH physics and run-control settings (settings.hh), each declared
-// once: name, member, bounds and help; the defaults are the structs' own.
+// once: name, member, bounds and help; the defaults are the structs' own. The upper bounds of the
+// numerical keys are far beyond any useful value: they keep absurd input from overflowing.
 #include "specialization/sph/settings.hh"
+
+#include <cmath>
+#include <sstream>
 
 namespace flecsph::sph {
 
@@ -33,28 +37,34 @@ physics_block declare_physics() {
     .greater_than(0);
   p.real("viscosity_alpha", member(&physics_settings::viscosity, &viscosity_parameters::alpha),
          "alpha of the Monaghan-Gingold viscosity")
-    .at_least(0);
+    .range(0, 100);
   p.real("viscosity_beta", member(&physics_settings::viscosity, &viscosity_parameters::beta),
          "beta of the Monaghan-Gingold viscosity")
-    .at_least(0);
+    .range(0, 100);
   p.real("viscosity_epsilon", member(&physics_settings::viscosity, &viscosity_parameters::epsilon),
          "epsilon of mu_ab, in units of h^2")
-    .greater_than(0);
+    .greater_than(0)
+    .at_most(1);
   p.boolean("balsara_switch", &physics_settings::balsara, "Balsara (1995) switch on the viscosity");
   p.real("conductivity_alpha", &physics_settings::conductivity,
          "alpha_u of the Price (2008) artificial conductivity (0: off)")
-    .at_least(0);
+    .range(0, 100);
   p.boolean("adaptive_smoothing_length", &physics_settings::adaptive_smoothing_length,
             "h = eta (m/rho)^(1/D) with grad-h terms, else h fixed");
-  p.real("eta", &physics_settings::eta, "h = eta (m/rho)^(1/D)").greater_than(0);
-  p.real("h_tolerance", &physics_settings::h_tolerance, "relative residual of the h-rho relation").greater_than(0);
-  p.integer("h_iterations", &physics_settings::h_iterations, "most Newton-Raphson iterations for h").at_least(1);
+  p.real("eta", &physics_settings::eta, "h = eta (m/rho)^(1/D)").greater_than(0).at_most(10);
+  p.real("h_tolerance", &physics_settings::h_tolerance, "relative residual of the h-rho relation")
+    .greater_than(0)
+    .at_most(0.1);
+  p.integer("h_iterations", &physics_settings::h_iterations, "most Newton-Raphson iterations for h").range(1, 10000);
   p.real("courant", &physics_settings::courant, "Courant factor of the time step").greater_than(0).at_most(1);
-  p.real("acceleration_factor", &physics_settings::acceleration_factor, "dt <= factor sqrt(h/|a|)").greater_than(0);
-  p.real("search_margin", &physics_settings::search_margin, "neighbour search reach 2 (1 + margin) h").at_least(0);
+  p.real("acceleration_factor", &physics_settings::acceleration_factor, "dt <= factor sqrt(h/|a|)")
+    .greater_than(0)
+    .at_most(10);
+  p.real("search_margin", &physics_settings::search_margin, "neighbour search reach 2 (1 + margin) h")
+    .range(0, 10);
   p.real("distribution_skin", &physics_settings::distribution_skin,
          "ghosts reach (1 + skin) times the search: distribute when used up")
-    .at_least(0);
+    .range(0, 10);
   return p;
 }
 } // namespace
@@ -74,6 +84,40 @@ parameter_block<run_settings> run_parameters(const run_settings& defaults) {
               "steps between conserved-quantity lines (0: first and last)")
     .at_least(0);
   return run;
+}
+
+namespace {
+std::string derived_problem(const std::string& program, const std::string& what, double value,
+                            const std::string& keys, const std::string& requirement) {
+  std::ostringstream message;
+  message.precision(6);
+  message << program << ": " << what << " = " << value << " (from " << keys << ") " << requirement;
+  return message.str();
+}
+} // namespace
+
+double checked_length(const std::string& program, const std::string& what, double value,
+                      const std::string& keys) {
+  if (!(value >= smallest_length && value <= largest_length))
+    throw flecsi_lite::runtime::parameter_error(
+      derived_problem(program, what, value, keys, "must be a length in [1e-50, 1e50]"));
+  return value;
+}
+
+double checked_positive(const std::string& program, const std::string& what, double value,
+                        const std::string& keys) {
+  if (!(std::isfinite(value) && value > 0))
+    throw flecsi_lite::runtime::parameter_error(
+      derived_problem(program, what, value, keys, "must be finite and > 0"));
+  return value;
+}
+
+std::int64_t checked_count(const std::string& program, const std::string& what, double value,
+                           const std::string& keys) {
+  if (!(value >= 0 && value <= most_particles))
+    throw flecsi_lite::runtime::parameter_error(
+      derived_problem(program, what, value, keys, "must be a count in [0, 2^40]"));
+  return std::llround(value);
 }
 
 } // namespace flecsph::sph

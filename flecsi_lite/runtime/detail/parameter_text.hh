@@ -9,6 +9,17 @@
 
 namespace flecsi_lite::runtime::detail {
 
+/// The longest key a parameter file may give: longer ones are an error before any lookup (and
+/// before "did you mean", whose cost grows with the key's length).
+inline constexpr std::size_t longest_key = 200;
+
+/// The lines of `text`: each of LF, CRLF and a lone CR (old Mac files) ends a line, so that a file
+/// saved with any of them has the same lines and line numbers; the line ends are not kept.
+std::vector<std::string> split_lines(const std::string& text);
+/// `text` itself when short, else its first characters, "..." and its length: long input quoted
+/// in a message stays readable.
+std::string excerpt(const std::string& text);
+
 std::string trim(const std::string& text);
 /// Letters, digits, '_', '.' and '-', at least one.
 bool is_key(const std::string& key);

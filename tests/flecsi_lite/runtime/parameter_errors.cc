@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "flecsi_lite/runtime/parameters.hh"
+#include "flecsi_lite/util/edit_distance.hh"
 
 using namespace flecsi_lite::runtime;
 using Catch::Contains;
@@ -129,4 +130,62 @@ TEST_CASE("mistakes of the program are logic errors") {
   CHECK_THROWS_AS(s.integer("n", "n").default_value("ten"), std::logic_error);
   s.integer("m", "m").default_value(0).at_least(1);
   CHECK_THROWS_WITH(parameters::parse(s, "x = 1\n", "s.par"), Contains("default of 'm' is invalid"));
+}
+
+TEST_CASE("LF, CRLF and lone CR all end lines, with the same line numbers") {
+  const std::string lines[] = {"particles = 7", "# a comment", "gamma = 1.2", "periodic = yes"};
+  for (const std::string end : {"\n", "\r\n", "\r"}) {
+    std::string text;
+    for (const auto& line : lines) text += line + end;
+    const auto p = parameters::parse(schema(), text, "run.par");
+    CHECK(p.get<int>("particles") == 7);
+    CHECK(p.get<double>("gamma") == 1.2);
+    CHECK(p.get<bool>("periodic"));
+    CHECK(p.origin("gamma") == "file run.par:3");
+    // An error names the same line whatever the line ends.
+    CHECK_THAT(error_of(text + "gama = 1" + end), Contains("run.par:5: unknown key 'gama'"));
+  }
+  // A lone CR before CRLF is an empty line of its own.
+  CHECK(parameters::parse(schema(), "particles = 1\r\r\ngamma = 2\r\n", "run.par").origin("gamma") ==
+        "file run.par:3");
+}
+
+TEST_CASE("a value starting with '=' is an error naming file, line and key") {
+  CHECK_THAT(error_of("particles = 1\ngamma == 3\n"),
+             Contains("run.par:2: the value of key 'gamma' starts with '='") && Contains("one '='"));
+  CHECK_THAT(error_of("particles = 1\n", {"gamma==3"}),
+             Contains("command line (--set gamma==3)") && Contains("key 'gamma' starts with '='"));
+  // A '=' later in a value is the value's own (strings may hold it).
+  CHECK(parameters::parse(schema(), "particles = 1\noutput = a=b\n", "run.par").get<std::string>("output") == "a=b");
+}
+
+TEST_CASE("a key longer than 200 characters is an error without a suggestion, quoted short") {
+  const std::string long_key(10'000'000, 'g');
+  for (const std::string& text : {long_key + " = 1\n", "particles = 1\n" + long_key + "a=1\n"}) {
+    const auto message = error_of(text);
+    CHECK_THAT(message, Contains("is longer than 200 characters") && !Contains("did you mean"));
+    CHECK(message.size() < 300);
+  }
+  CHECK_THAT(error_of("particles = 1\n", {long_key + "=1"}),
+             Contains("command line (--set ggg") && Contains("is longer than 200 characters"));
+  // A malformed long line is quoted short too.
+  CHECK(error_of(long_key + "\n").size() < 300);
+  // 200 characters is still a key, unknown here.
+  CHECK_THAT(error_of(std::string(200, 'k') + " = 1\n"), Contains("unknown key"));
+}
+
+TEST_CASE("did you mean: the nearest name, found without computing hopeless distances") {
+  using flecsi_lite::util::edit_distance;
+  using flecsi_lite::util::nearest_name;
+  const std::vector<std::string> names = {"particles", "gamma", "periodic", "kernel", "x", "particles_per_side"};
+  // The suggestion equals the brute-force nearest within the typo distance, first one on ties.
+  for (const std::string typo : {"particels", "gama", "perodic", "kernal", "y", "particles_per_sid", "zzzzzzzz", ""}) {
+    std::string expected;
+    std::size_t best = std::max<std::size_t>(3, typo.size() / 2) + 1;
+    for (const auto& name : names)
+      if (const auto d = edit_distance(typo, name); d < best) best = d, expected = name;
+    CHECK(nearest_name(typo, names) == expected);
+  }
+  // Names too long to be a typo of any key get no suggestion.
+  CHECK(nearest_name(std::string(300, 'a'), std::vector<std::string>{std::string(299, 'a')}).empty());
 }
