@@ -1,7 +1,8 @@
 // Parallel HDF5 I/O in the H5Part layout, its public face: writer, reader, checkpoints, ASCII
 // export for splash, the errors every reader and writer throws, where each rank's particles lie
-// in a file, attribute values and element types, and collective agreement on failures. The HDF5
-// plumbing (handles, property lists, attributes, the error stack) lives in io/hdf5/.
+// in a file, attribute values and element types, collective agreement on failures and the checks
+// of the paths writers replace. The HDF5 plumbing (handles, property lists, attributes, the error
+// stack) lives in io/hdf5/.
 #pragma once
 #include "flecsi_lite/io/ascii_columns.hh"
 #include "flecsi_lite/io/attribute_value.hh"
@@ -11,5 +12,6 @@
 #include "flecsi_lite/io/h5part_reader.hh"
 #include "flecsi_lite/io/h5part_writer.hh"
 #include "flecsi_lite/io/io_error.hh"
+#include "flecsi_lite/io/output_path.hh"
 #include "flecsi_lite/io/particle_partition.hh"
 #include "flecsi_lite/io/step_info.hh"

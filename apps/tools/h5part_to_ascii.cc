@@ -81,6 +81,13 @@ int run(int argc, char** argv) {
       list_contents(reader, step, std::cout);
       return 0;
     }
+    // Before anything is read or written: the export replaces only a regular file (never a device,
+    // folder, link or fifo), through a temporary file that must not be one either.
+    if (options.has("output")) {
+      io::require_replaceable(options.get("output"), "--output");
+      io::require_replaceable(options.get("output") + ".partial", "temporary file");
+      io::require_writable_folder(options.get("output"), "--output");
+    }
     const auto columns = options.has("columns") ? split_list(options.get("columns"))
                                                 : io::available_columns(reader, step, default_columns);
     if (!options.has("output")) {

@@ -1,10 +1,54 @@
 // The file keys of the app frame (file_settings.hh), declared once with their checks.
 #include "flecsi_lite/app/file_settings.hh"
 
+#include "flecsi_lite/io/output_path.hh"
+
+#include <filesystem>
+#include <utility>
+#include <vector>
+
 namespace flecsi_lite::app {
 
+namespace {
+using runtime::parameter_error;
+
+// One file as the path it resolves to, so that "./a.h5part" and "a.h5part" are the same file.
+std::string normalized(const std::string& path) {
+  std::error_code error;
+  const auto resolved = std::filesystem::weakly_canonical(std::filesystem::absolute(path), error);
+  return error ? path : resolved.lexically_normal().string();
+}
+
+struct named_file {
+  const char* key;
+  const std::string& path;
+};
+
+// A file the run writes: it can be created where it is named, and what is there now may be replaced.
+void require_writable(const named_file& file) {
+  if (file.path.empty()) return;
+  const std::string kind = io::non_regular_kind(file.path);
+  if (!kind.empty())
+    throw parameter_error(std::string(file.key) + " = '" + file.path + "' is " + kind +
+                          ", not a regular file: it is never replaced; choose another path");
+  const std::string reason = io::unwritable_folder_reason(file.path);
+  if (!reason.empty())
+    throw parameter_error(std::string(file.key) + " = '" + file.path + "' cannot be written: " + reason);
+}
+
+// Two keys naming one file (or one naming the other's temporary `<path>.partial`): writing one
+// would replace or corrupt the other.
+void require_distinct(const named_file& written, const named_file& other) {
+  if (written.path.empty() || other.path.empty()) return;
+  const std::string a = normalized(written.path), b = normalized(other.path);
+  if (a == b || a == b + ".partial" || b == a + ".partial")
+    throw parameter_error(std::string(written.key) + " = '" + written.path + "' and " + other.key + " = '" +
+                          other.path + "' name the same file (or its temporary '.partial'): writing " +
+                          written.key + " would destroy it; give them different paths");
+}
+} // namespace
+
 runtime::parameter_block<file_settings> file_parameters(const file_settings& defaults) {
-  using runtime::parameter_error;
   runtime::parameter_block<file_settings> files(defaults);
   files.file("output_file", &file_settings::output_file, "H5Part output file (none: no output)");
   files.real("output_every", &file_settings::output_every, "simulation time between outputs (0: first and last step only)")
@@ -19,6 +63,17 @@ runtime::parameter_block<file_settings> file_parameters(const file_settings& def
   files.integer("initial_data_step", &file_settings::initial_data_step, "Step#k of initial_data to read (-1: the last)")
     .at_least(-1);
   files.check([](const file_settings& f) {
+    const named_file output{"output_file", f.output_file}, checkpoint{"checkpoint_file", f.checkpoint_file},
+      restart{"restart_file", f.restart_file}, initial{"initial_data", f.initial_data};
+    // Checked at start-up, not when the file is first written after the run (or a checkpoint).
+    require_writable(output);
+    if (f.checkpoint_every > 0) require_writable(checkpoint);
+    require_distinct(output, checkpoint);
+    require_distinct(output, restart);
+    require_distinct(output, initial);
+    require_distinct(checkpoint, initial);
+    // checkpoint_file = restart_file is allowed: the checkpoint is read whole at start-up, and a
+    // new one replaces it only by an atomic rename once complete (a run continued in chunks).
     if (!f.restart_file.empty() && !f.initial_data.empty())
       throw parameter_error("restart_file and initial_data are both set: a restart continues "
                             "the checkpoint's particles; set only one of them");

@@ -20,8 +20,12 @@ struct file_settings {
 };
 
 /// The keys output_file, output_every, checkpoint_file, checkpoint_every, restart_file,
-/// initial_data and initial_data_step with `defaults`; read() rejects restart_file with
-/// initial_data, and checkpoint_every without a checkpoint_file (parameter_error).
+/// initial_data and initial_data_step with `defaults`; read() rejects (parameter_error, naming the
+/// keys) restart_file with initial_data; checkpoint_every without a checkpoint_file; an output or
+/// (used) checkpoint path that exists and is not a regular file, or whose folder is missing or not
+/// writable; output_file equal to checkpoint_file, restart_file or initial_data, and
+/// checkpoint_file equal to initial_data (compared as resolved paths). checkpoint_file may equal
+/// restart_file: a new checkpoint replaces the one it continues from atomically.
 runtime::parameter_block<file_settings> file_parameters(const file_settings& defaults = {});
 
 } // namespace flecsi_lite::app

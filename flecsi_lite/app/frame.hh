@@ -29,6 +29,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -73,18 +74,35 @@ public:
 
   /// Runs `model` on `state` and returns `check(state)`, the exit status of the app's checks;
   /// under --control-model, writes the model (on rank 0) and returns 0 without running or checking.
+  /// A state with a member commit_outputs() writes its outputs under temporary names: it is called
+  /// only once the run and the checks have passed, so that a failed run never replaces an earlier
+  /// output.
   template<class State, class Check>
   int execute(const control::control_model<State>& model, State& state, Check&& check) const {
     const int status = model.execute(state);
     if (status || control_model_only()) return status;
-    return check(static_cast<const State&>(state));
+    const int verdict = check(static_cast<const State&>(state));
+    if (verdict == 0) commit_outputs(state);
+    return verdict;
   }
   template<class State>
   int execute(const control::control_model<State>& model, State& state) const {
-    return model.execute(state);
+    const int status = model.execute(state);
+    if (status == 0) commit_outputs(state);
+    return status;
   }
 
 private:
+  template<class State, class = void>
+  struct has_commit_outputs : std::false_type {};
+  template<class State>
+  struct has_commit_outputs<State, std::void_t<decltype(std::declval<State&>().commit_outputs())>>
+    : std::true_type {};
+  template<class State>
+  static void commit_outputs(State& state) {
+    if constexpr (has_commit_outputs<State>::value) state.commit_outputs();
+  }
+
   const definition& app_;
   const runtime::parameters& parameters_;
   const runtime::options& options_;

@@ -7,6 +7,7 @@
 #include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
 #include "flecsi_lite/io/hdf5/hdf5_errors.hh"
 #include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
+#include "flecsi_lite/io/output_path.hh"
 #include "flecsi_lite/io/particle_partition.hh"
 #include "flecsi_lite/runtime/log.hh"
 
@@ -34,6 +35,13 @@ std::string fingerprint(const std::string& name, const attribute_value& value) {
 h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
   : path_(std::move(path)), comm_(comm) {
   hdf5_quiet_scope quiet;
+  // Before anything is written: the final name and the temporary one must be absent or regular
+  // files, or the rename would replace a device, a folder or a link (and H5Fcreate follow it).
+  agree(comm_, [&] {
+    if (rank_of(comm_) != 0) return;
+    require_replaceable(path_);
+    require_replaceable(partial_path(), "temporary file");
+  });
   // Appending works on a copy, so that the complete file stays intact until close().
   int append_to_copy = 0;
   if (how == mode::append) {
@@ -85,6 +93,12 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
 h5part_writer::~h5part_writer() { abandon(); }
 
 void h5part_writer::abandon() noexcept {
+  if (committing_) {
+    if (rank_of(comm_) == 0)
+      log::warn() << "h5part: '" << path_ << "' was left unchanged (the run did not pass its checks); "
+                  << "its complete output of " << steps_written_ << " steps is in '" << partial_path() << "'";
+    return;
+  }
   if (!is_open()) return;
   try {
     hdf5_quiet_scope quiet;
@@ -93,10 +107,26 @@ void h5part_writer::abandon() noexcept {
       step_group_.close();
       H5Ldelete(file_.get(), h5part::step_group_name(steps_written_).c_str(), H5P_DEFAULT);
     }
+    // A failed H5Fclose leaves HDF5 a half-closed file that crashes its clean-up in MPI_Finalize,
+    // so the close must not fail: when the metadata cannot be flushed (a full disk), the partial
+    // file is emptied first (every rank agrees, it has no complete content to keep), which gives
+    // back the space the close needs, and removed afterwards. (libhdf5 1.10 may still print
+    // "infinite loop closing library" at exit: blocks its failed flush leaked; the exit is clean.)
+    int flushed = H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0;
+    MPI_Allreduce(MPI_IN_PLACE, &flushed, 1, MPI_INT, MPI_MIN, comm_);
+    std::error_code error;
+    if (!flushed && rank_of(comm_) == 0) std::filesystem::resize_file(partial_path(), 0, error);
+    if (!flushed) MPI_Barrier(comm_);
     file_.close();
-    if (rank_of(comm_) == 0)
+    if (rank_of(comm_) != 0) return;
+    if (flushed) {
       log::warn() << "h5part: '" << path_ << "' was not closed; its " << steps_written_
                   << " finished steps are in '" << partial_path() << "'";
+    } else {
+      std::filesystem::remove(partial_path(), error);
+      log::warn() << "h5part: '" << path_ << "' was not closed and its temporary file could not be "
+                  << "completed (disk full?): '" << partial_path() << "' removed, '" << path_ << "' unchanged";
+    }
   } catch (...) {
   }
 }
@@ -245,23 +275,45 @@ void h5part_writer::end_step() {
   raise_if_any(comm_, failed);
 }
 
-void h5part_writer::close() {
+void h5part_writer::finish() {
   if (!is_open()) return;
   if (in_step()) end_step();
   hdf5_quiet_scope quiet;
+  // Everything on disk before the close, so that a failure leaves the file open for abandon().
   std::optional<failure_record> failed;
+  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0)
+    failed = failure_record{failure::file, "cannot flush '" + partial_path() + "'" + hdf5_reason()};
+  raise_if_any(comm_, failed);
   if (file_.close() < 0)
     failed = failure_record{failure::file, "cannot close '" + partial_path() + "'" + hdf5_reason()};
   raise_if_any(comm_, failed);
-  // Only now, with every byte written by every rank, does the file take its final name.
+  committing_ = true;
+}
+
+void h5part_writer::commit() {
+  if (!committing_) return;
+  std::optional<failure_record> failed;
+  // Only now, with every byte written by every rank, does the file take its final name; the
+  // final path is checked again, since it may have changed while the run wrote.
   if (rank_of(comm_) == 0) {
     std::error_code error;
-    std::filesystem::rename(partial_path(), path_, error);
+    try {
+      require_replaceable(path_);
+      std::filesystem::rename(partial_path(), path_, error);
+    } catch (const io_error& e) {
+      failed = failure_record{e.kind(), e.what()};
+    }
     if (error)
       failed = failure_record{failure::file, "cannot rename '" + partial_path() + "' to '" + path_ +
                                                "': " + error.message()};
   }
   raise_if_any(comm_, failed);  // also keeps every rank here until the rename is done
+  committing_ = false;
+}
+
+void h5part_writer::close() {
+  finish();
+  commit();
 }
 
 } // namespace flecsi_lite::io

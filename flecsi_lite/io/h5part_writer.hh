@@ -5,9 +5,11 @@
 // TimeValue and time hold the simulation time, step the iteration number, dt the time step. A
 // *dataset* is one quantity of every particle of the step (global length N, the sum of the
 // ranks' local counts); rank r's particles follow those of ranks 0..r-1. The file is written as
-// `<path>.partial` and renamed to `<path>` by close(): a crash never leaves a half-written file
-// under the final name nor harms an older complete file of that name; every finished step is
-// flushed, so the partial file holds all of them.
+// `<path>.partial` and renamed to `<path>` by close() (or finish() then commit()): a crash never
+// leaves a half-written file under the final name nor harms an older complete file of that name;
+// every finished step is flushed, so the partial file holds all of them. A path that exists and is
+// not a regular file (device, folder, symbolic link, fifo) is refused before anything is written.
+// After a failed write (a full disk), HDF5 is still closed completely.
 //
 //   h5part_writer out("sod.h5part");
 //   out.set_attribute("program", "sod");
@@ -56,7 +58,8 @@ public:
   h5part_writer(const h5part_writer&) = delete;
   h5part_writer& operator=(const h5part_writer&) = delete;
   /// Without close(): drops an unfinished step, closes the partial file (collectively, like
-  /// every parallel HDF5 close) and leaves the final name untouched.
+  /// every parallel HDF5 close; emptied and removed when it cannot be flushed) and leaves the
+  /// final name untouched.
   ~h5part_writer();
 
   /// Root attribute, replaced if present; same value on every rank.
@@ -82,10 +85,18 @@ public:
   /// Closes the step, updates NumSteps and flushes the file.
   void end_step();
 
-  /// Ends an open step, closes the file and renames `<path>.partial` to `<path>`.
+  /// Ends an open step, closes the file and renames `<path>.partial` to `<path>`: finish(), commit().
   void close();
+  /// Ends an open step and closes `<path>.partial`, complete; `<path>` is not touched yet (a run
+  /// checks its results before it replaces an earlier output).
+  void finish();
+  /// After finish(): renames `<path>.partial` to `<path>` (refused when `<path>` has become
+  /// something else than a regular file). Without it, the destructor leaves both files as they are.
+  void commit();
 
   bool is_open() const { return file_.valid(); }
+  /// Finished and not yet committed.
+  bool awaits_commit() const { return committing_; }
   bool in_step() const { return step_group_.valid(); }
   std::int64_t steps_written() const { return steps_written_; }
   const std::string& path() const { return path_; }
@@ -102,6 +113,7 @@ private:
   hdf5_handle file_;
   hdf5_handle step_group_;
   std::int64_t steps_written_ = 0;
+  bool committing_ = false;                      // finished, the rename still to come
   std::set<std::string> step_datasets_;          // names written in the open step
   std::optional<std::uint64_t> step_length_;     // global length of the open step's datasets
 };

@@ -45,6 +45,11 @@ struct app_state : simulation<D> {
   statistics_settings statistics_keys;  ///< statistics_file resolved ("auto" replaced; empty: none)
   statistics_log statistics;
   double statistics_dt = 0;  ///< the step about to be taken: the dt of the next row
+  /// Called by the frame (run_context::execute) once the run and its checks have passed: only
+  /// then does the output, complete since "finalize", replace an earlier file of its name.
+  void commit_outputs() {
+    if (writer) writer->commit();
+  }
 };
 
 /// Reads the physics, run-control, statistics and file keys into `s`; the program's name from the
@@ -210,7 +215,7 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
   m.depends(checkpoint, output);
   m.action("finalize", "close_output", [](State& s) {
     if (!s.writer) return;
-    s.writer->close();
+    s.writer->finish();  // renamed by commit_outputs(), after the app's checks
     flecsi_lite::log::info() << s.program << ": wrote " << s.writer->steps_written() << " steps to "
                              << s.files.output_file;
   });

@@ -1,0 +1,61 @@
+// Checks of the paths writers replace (see output_path.hh), on std::filesystem and access(2).
+#include "flecsi_lite/io/output_path.hh"
+
+#include "flecsi_lite/io/io_error.hh"
+
+#include <unistd.h>
+
+#include <filesystem>
+
+namespace flecsi_lite::io {
+
+namespace fs = std::filesystem;
+
+std::string non_regular_kind(const std::string& path) {
+  std::error_code error;
+  const fs::file_status status = fs::symlink_status(path, error);  // the link itself, not its target
+  switch (status.type()) {
+    case fs::file_type::not_found:
+    case fs::file_type::none:
+    case fs::file_type::regular: return "";
+    case fs::file_type::directory: return "a directory";
+    case fs::file_type::symlink: return "a symbolic link";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::fifo: return "a fifo";
+    case fs::file_type::socket: return "a socket";
+    default: return "not a regular file";
+  }
+}
+
+namespace {
+std::string named(const std::string& path, const std::string& role) {
+  return (role.empty() ? "" : role + " ") + "'" + path + "'";
+}
+} // namespace
+
+void require_replaceable(const std::string& path, const std::string& role) {
+  const std::string kind = non_regular_kind(path);
+  if (!kind.empty())
+    throw file_error(named(path, role) + " exists and is " + kind +
+                     ", not a regular file: it is never replaced; choose another path");
+}
+
+std::string unwritable_folder_reason(const std::string& path) {
+  fs::path folder = fs::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  std::error_code error;
+  const fs::file_status status = fs::status(folder, error);
+  if (status.type() == fs::file_type::not_found) return "its folder '" + folder.string() + "' does not exist";
+  if (status.type() != fs::file_type::directory) return "'" + folder.string() + "' is not a folder";
+  // Creating the temporary file needs write and search permission on the folder.
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) return "its folder '" + folder.string() + "' is not writable";
+  return "";
+}
+
+void require_writable_folder(const std::string& path, const std::string& role) {
+  const std::string reason = unwritable_folder_reason(path);
+  if (!reason.empty()) throw file_error("cannot write " + named(path, role) + ": " + reason);
+}
+
+} // namespace flecsi_lite::io
