@@ -36,17 +36,20 @@ void require_writable(const named_file& file) {
     throw parameter_error(std::string(file.key) + " = '" + file.path + "' cannot be written: " + reason);
 }
 
-// Two keys naming one file (or one naming the other's temporary `<path>.partial`): writing one
-// would replace or corrupt the other.
+// Two keys naming one file (names_same_file).
 void require_distinct(const named_file& written, const named_file& other) {
-  if (written.path.empty() || other.path.empty()) return;
-  const std::string a = normalized(written.path), b = normalized(other.path);
-  if (a == b || a == b + ".partial" || b == a + ".partial")
+  if (names_same_file(written.path, other.path))
     throw parameter_error(std::string(written.key) + " = '" + written.path + "' and " + other.key + " = '" +
                           other.path + "' name the same file (or its temporary '.partial'): writing " +
                           written.key + " would destroy it; give them different paths");
 }
 } // namespace
+
+bool names_same_file(const std::string& a, const std::string& b) {
+  if (a.empty() || b.empty()) return false;
+  const std::string x = normalized(a), y = normalized(b);
+  return x == y || x == y + ".partial" || y == x + ".partial";
+}
 
 runtime::parameter_block<file_settings> file_parameters(const file_settings& defaults) {
   runtime::parameter_block<file_settings> files(defaults);

@@ -5,14 +5,14 @@
 #include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/io/collective_agreement.hh"
 #include "flecsi_lite/io/io_error.hh"
+#include "flecsi_lite/io/output_path.hh"
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/runtime/log.hh"
 
-#include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <sstream>
 
 // Set by the top-level CMakeLists.txt on this file only, so that a new commit recompiles nothing else.
 #ifndef FLECSPH_VERSION
@@ -34,10 +34,8 @@ std::string beside_output(const std::string& output_file, const std::string& pro
 
 void check_distinct_file(const std::string& key, const std::string& path,
                          const std::vector<std::pair<std::string, std::string>>& others) {
-  if (path.empty()) return;
-  const auto normal = [](const std::string& name) { return std::filesystem::path(name).lexically_normal(); };
   for (const auto& [other_key, other] : others)
-    if (!other.empty() && normal(other) == normal(path))
+    if (names_same_file(path, other))
       throw runtime::parameter_error(key + " '" + path + "' is also " + other_key + ": set " + key +
                                      " to another name (or none)");
 }
@@ -93,27 +91,16 @@ std::string used_parameters_path(const definition& app, const runtime::parameter
   return path;
 }
 
-/// Rank 0 writes `<path>.partial` and renames it over `path` (never over anything but a regular
-/// file); every rank throws the same io_error when that fails. Collective.
+/// Rank 0 writes the file (io::write_text_file: never over anything but a regular file); every
+/// rank throws the same io_error when that fails. Collective.
 void write_used_parameters(const definition& app, const std::string& path, const runtime::parameters& p) {
   io::agree(runtime::communicator(), [&] {
     if (runtime::rank() != 0) return;
-    namespace fs = std::filesystem;
-    std::error_code error;
-    const fs::file_status existing = fs::symlink_status(path, error);
-    if (fs::exists(existing) && !fs::is_regular_file(existing))
-      throw io::file_error("used_parameters_file '" + path + "' exists and is not a regular file: not replaced");
-    const std::string partial = path + ".partial";
-    {
-      std::ofstream out(partial, std::ios::trunc);
-      out << "# " << app.program << " " << version() << " (git " << git_describe()
-          << "): every parameter of a run, defaults included; rerun with `" << app.program << " " << path << "`\n"
-          << p.resolved_text();
-      out.flush();
-      if (!out) throw io::file_error("cannot write the used_parameters_file '" + partial + "'");
-    }
-    if (std::rename(partial.c_str(), path.c_str()) != 0)
-      throw io::file_error("cannot rename '" + partial + "' to the used_parameters_file '" + path + "'");
+    std::ostringstream text;
+    text << "# " << app.program << " " << version() << " (git " << git_describe()
+         << "): every parameter of a run, defaults included; rerun with `" << app.program << " " << path << "`\n"
+         << p.resolved_text();
+    io::write_text_file(path, text.str(), "used_parameters_file");
   });
   log::info() << app.program << ": parameters of this run in " << path;
 }

@@ -122,7 +122,8 @@ std::string beside_output(const std::string& output_file, const std::string& pro
 std::string used_parameters_file(const std::string& program, const runtime::parameters& p);
 
 /// Throws parameter_error when `path`, the value of `key`, names the same file as one of `others`
-/// (key and value; an empty value is none): one of two files with one name would be lost.
+/// (key and value; an empty value is none; file_settings.hh names_same_file): one of two files
+/// with one name would be lost.
 void check_distinct_file(const std::string& key, const std::string& path,
                          const std::vector<std::pair<std::string, std::string>>& others);
 

@@ -5,7 +5,9 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 namespace flecsi_lite::io {
 
@@ -56,6 +58,19 @@ std::string unwritable_folder_reason(const std::string& path) {
 void require_writable_folder(const std::string& path, const std::string& role) {
   const std::string reason = unwritable_folder_reason(path);
   if (!reason.empty()) throw file_error("cannot write " + named(path, role) + ": " + reason);
+}
+
+void write_text_file(const std::string& path, const std::string& text, const std::string& role) {
+  const std::string partial = path + ".partial";
+  require_replaceable(path, role);
+  require_replaceable(partial, "temporary file");
+  {
+    std::ofstream out(partial, std::ios::trunc);
+    out << text;
+    if (!out.flush()) throw file_error("cannot write " + named(partial, "the " + role + " temporary file"));
+  }
+  if (std::rename(partial.c_str(), path.c_str()) != 0)
+    throw file_error("cannot rename '" + partial + "' to " + named(path, "the " + role));
 }
 
 } // namespace flecsi_lite::io

@@ -26,4 +26,9 @@ std::string unwritable_folder_reason(const std::string& path);
 /// Throws file_error with unwritable_folder_reason(path) when it is not empty.
 void require_writable_folder(const std::string& path, const std::string& role = "");
 
+/// Writes `text` to `<path>.partial` and renames it over `path`, so that a crash never leaves a
+/// half-written file under `path`; neither may exist as anything but a regular file
+/// (require_replaceable). Throws file_error naming `role` (e.g. "statistics_file"). Local.
+void write_text_file(const std::string& path, const std::string& text, const std::string& role);
+
 } // namespace flecsi_lite::io

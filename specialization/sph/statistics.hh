@@ -121,23 +121,13 @@ public:
   void open(const std::string& path, const std::string& header, std::optional<long> restart_step) {
     flecsi_lite::io::agree(flecsi_lite::runtime::communicator(), [&] {
       if (flecsi_lite::runtime::rank() != 0) return;
-      namespace fs = std::filesystem;
-      std::error_code error;
-      const fs::file_status existing = fs::symlink_status(path, error);
-      if (fs::exists(existing) && !fs::is_regular_file(existing))
-        throw flecsi_lite::io::file_error("statistics_file '" + path +
-                                          "' exists and is not a regular file: not replaced");
       std::string kept = header;
-      if (restart_step && fs::exists(existing)) kept = rows_up_to(path, header, *restart_step);
-      const std::string partial = path + ".partial";
-      {
-        std::ofstream out(partial, std::ios::trunc);
-        out << kept;
-        if (restart_step) out << "# restarted at step " << *restart_step << "\n";
-        if (!out.flush()) throw flecsi_lite::io::file_error("cannot write the statistics_file '" + partial + "'");
+      if (restart_step) {
+        if (std::filesystem::is_regular_file(std::filesystem::symlink_status(path)))
+          kept = rows_up_to(path, header, *restart_step);
+        kept += "# restarted at step " + std::to_string(*restart_step) + "\n";
       }
-      if (std::rename(partial.c_str(), path.c_str()) != 0)
-        throw flecsi_lite::io::file_error("cannot rename '" + partial + "' to the statistics_file '" + path + "'");
+      flecsi_lite::io::write_text_file(path, kept, "statistics_file");
       out_.open(path, std::ios::app);
       if (!out_) throw flecsi_lite::io::file_error("cannot append to the statistics_file '" + path + "'");
     });
