@@ -38,6 +38,24 @@ private:
   std::string name_;
 };
 
+/// Packs the values at `indices` of several fields into one message: the first field's values,
+/// then the next field's (element_size() bytes each).
+inline void pack_fields(const std::vector<field_storage_base*>& fields, const std::vector<std::size_t>& indices,
+                        std::byte* out) {
+  for (const auto* f : fields) {
+    f->pack(indices.data(), indices.size(), out);
+    out += indices.size() * f->element_size();
+  }
+}
+/// Unpacks a message of pack_fields into positions first, ..., first + count - 1 of each field.
+inline void unpack_fields(const std::vector<field_storage_base*>& fields, const std::byte* in, std::size_t first,
+                          std::size_t count) {
+  for (auto* f : fields) {
+    f->unpack(in, first, count);
+    in += count * f->element_size();
+  }
+}
+
 template<class T>
 class field_storage final : public field_storage_base {
   static_assert(std::is_trivially_copyable_v<T>, "field values are copied as bytes");

@@ -149,6 +149,8 @@ auto execute(Args&&... args) {
 
 /// Launches task F on every rank and combines the results over ranks with Op (reduction::sum,
 /// min, max, exact_sum); returns a future of the combined value, the same on every rank.
+/// Two launches: the local task (holds the field privileges, so the fields are free once it
+/// has run) and the collective (holds only the value).
 template<auto F, class Op, class... Args>
 auto reduce(Args&&... args) {
   using namespace execution::detail;
@@ -165,14 +167,15 @@ auto reduce(Args&&... args) {
   };
   auto buffer = std::make_shared<buffers>();
   static const std::string name = task_name<F>();
-  auto l = execution::executor::instance().record(
-    name, execution::launch_kind::reduction, c.accesses, std::move(c.after),
-    [b = binders, buffer](execution::launch& self) {
-      {
-        // The task's own time, under its name like every task; not the wait for the other ranks.
-        timers::scoped timer(name);
-        buffer->mine = carrier::pack(std::apply([](auto&... a) { return F(a.get()...); }, *b));
-      }
+  static const std::string collective_name = name + " (combine)";
+  auto& ex = execution::executor::instance();
+  auto part = ex.record(name, execution::launch_kind::task, c.accesses, std::move(c.after),
+                        [b = binders, buffer](execution::launch&) {
+                          buffer->mine = carrier::pack(std::apply([](auto&... a) { return F(a.get()...); }, *b));
+                        });
+  auto l = ex.record(
+    collective_name, execution::launch_kind::reduction, {}, {part},
+    [buffer](execution::launch& self) {
       buffer->all.resize(runtime::size());
       MPI_Request request;
       MPI_Iallgather(&buffer->mine, sizeof(transported), MPI_BYTE, buffer->all.data(),

@@ -1,17 +1,32 @@
+// The executor (executor.hh): dependency bookkeeping per field and region, eager and packed ghost
+// copies, scheduling rounds (communication first), polling between loop chunks, failures and
+// cancellation.
 #include "flecsi_lite/execution/executor.hh"
 
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/runtime/log.hh"
 #include "flecsi_lite/runtime/runtime.hh"
 #include "flecsi_lite/runtime/timers.hh"
 
 #include <algorithm>
 #include <fstream>
+#include <iostream>
 #include <stdexcept>
 
 namespace flecsi_lite::execution {
 namespace {
 const char* kind_name(launch_kind k) {
   return k == launch_kind::task ? "task" : k == launch_kind::ghost_copy ? "ghost_copy" : "reduction";
+}
+std::string what_of(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    return "an exception that is not a std::exception";
+  }
 }
 // Tags of ghost-copy messages: distinct for copies that may be in flight together.
 constexpr int first_copy_tag = 1000, copy_tag_count = 30000;
@@ -26,10 +41,17 @@ executor& executor::instance() {
 
 executor::executor() : epoch_(std::chrono::steady_clock::now()) {
   data::set_layout_listener(this);
+  detail::poll_hook = [] { return executor::instance().poll(); };
   const std::string trace_file = runtime::current_settings().trace_file;
   tracing_ = !trace_file.empty();
   runtime::at_finalize([this, trace_file] {
-    wait_all();
+    // After a failure the other ranks wait for this one's messages: end them all.
+    if (failures_ && runtime::size() > 1) abort_run();
+    try {
+      wait_all();
+    } catch (const std::exception& e) {
+      log::error() << "flecsi_lite: " << e.what();
+    }
     if (trace_file.empty()) return;
     std::ofstream out;
     if (runtime::rank() == 0) out.open(trace_file);
@@ -37,7 +59,10 @@ executor::executor() : epoch_(std::chrono::steady_clock::now()) {
   });
 }
 
-executor::~executor() { data::set_layout_listener(nullptr); }
+executor::~executor() {
+  data::set_layout_listener(nullptr);
+  detail::poll_hook = nullptr;
+}
 
 double executor::now() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - epoch_).count();
@@ -45,13 +70,32 @@ double executor::now() const {
 
 void executor::add_dependencies(launch& l, field_state& state, region r, privilege p) {
   region_state& rs = state.regions[static_cast<int>(r)];
-  auto depend_on = [&l](const launch_ptr& other) {
-    if (other && other->state != launch_state::done) l.dependencies.push_back(other);
-  };
   if (p == na) return;
-  depend_on(rs.last_writer);  // read after write, write after write
+  auto depend_on = [&l](const launch_ptr& other, bool start_suffices) {
+    if (!other || other->state == launch_state::done) return;
+    if (start_suffices && other->state == launch_state::in_flight) return;
+    (start_suffices ? l.started : l.dependencies).push_back(other);
+    l.dependency_sequences.push_back(other->sequence);
+  };
+  depend_on(rs.last_writer, false);  // read after write, write after write
   if (writes(p))
-    for (auto& reader : rs.readers) depend_on(reader);  // write after read
+    for (auto& reader : rs.readers)  // write after read; a copy reads owned values when it starts
+      depend_on(reader, reader->kind == launch_kind::ghost_copy && r == region::owned);
+}
+
+template<class Wanted>
+void executor::record_ghost_copies(const std::vector<field_access>& accesses, Wanted wanted) {
+  std::vector<std::vector<const field_access*>> groups;  // stale fields, per topology
+  for (const auto& a : accesses) {
+    field_state& state = fields_[{a.topology->instance_id(), a.field}];
+    if (state.ghosts_valid || !wanted(a, state)) continue;
+    auto group = std::find_if(groups.begin(), groups.end(),
+                              [&a](const auto& g) { return g.front()->topology == a.topology; });
+    if (group == groups.end()) groups.push_back({&a});
+    else if (std::none_of(group->begin(), group->end(), [&a](const field_access* b) { return b->field == a.field; }))
+      group->push_back(&a);
+  }
+  for (const auto& group : groups) record_ghost_copy(group);
 }
 
 launch_ptr executor::record(std::string name, launch_kind kind,
@@ -65,11 +109,15 @@ launch_ptr executor::record(std::string name, launch_kind kind,
   l->start = std::move(start);
   l->finish = std::move(finish);
   for (auto& a : after)
-    if (a && a->state != launch_state::done) l->dependencies.push_back(a);
+    if (a && a->state != launch_state::done) {
+      l->dependencies.push_back(a);
+      l->dependency_sequences.push_back(a->sequence);
+    }
 
+  // Stale ghosts this launch reads (normally copied eagerly already): one copy per topology.
+  record_ghost_copies(accesses, [](const field_access& a, field_state&) { return reads(a.ghost); });
   for (const auto& a : accesses) {
     field_state& state = fields_[{a.topology->instance_id(), a.field}];
-    if (reads(a.ghost) && !state.ghosts_valid) record_ghost_copy(a, state);
     add_dependencies(*l, state, region::owned, a.owned);
     add_dependencies(*l, state, region::ghost, a.ghost);
   }
@@ -87,12 +135,17 @@ launch_ptr executor::record(std::string name, launch_kind kind,
         rs.readers.push_back(l);
       }
     }
+    if (reads(a.ghost)) state.ghosts_read = true;
     if (writes(a.owned)) state.ghosts_valid = false;  // shared values may have changed
     if (writes(a.ghost)) state.ghosts_valid = true;   // the task defined the ghost values
   }
   l->sequence = next_sequence_++;
   if (kind == launch_kind::reduction) l->collective_index = next_collective_recorded_++;
   queue_.push_back(l);
+  // The data of these copies is final once this launch has run: send it then, not when the
+  // next reader is recorded.
+  record_ghost_copies(accesses,
+                      [](const field_access& a, field_state& state) { return writes(a.owned) && state.ghosts_read; });
   // Scheduling scans the queue, so keep it short: run launches once the window is full.
   if (queue_.size() >= window)
     while (queue_.size() > window / 2)
@@ -100,22 +153,28 @@ launch_ptr executor::record(std::string name, launch_kind kind,
   return l;
 }
 
-launch_ptr executor::record_ghost_copy(const field_access& a, field_state& state) {
-  data::topology_base* topology = a.topology;
-  data::field_storage_base* storage = a.storage;
+launch_ptr executor::record_ghost_copy(const std::vector<const field_access*>& fields) {
+  data::topology_base* topology = fields.front()->topology;
+  std::vector<data::field_storage_base*> storages;
   const int tag = first_copy_tag + static_cast<int>(ghost_copies_++ % copy_tag_count);
   auto l = std::make_shared<launch>();
-  l->name = "ghost copy " + storage->name();
+  l->name = "ghost copy";
   l->kind = launch_kind::ghost_copy;
-  add_dependencies(*l, state, region::owned, ro);
-  add_dependencies(*l, state, region::ghost, wo);
+  for (const field_access* a : fields) {
+    field_state& state = fields_[{topology->instance_id(), a->field}];
+    add_dependencies(*l, state, region::owned, ro);
+    add_dependencies(*l, state, region::ghost, wo);
+    storages.push_back(a->storage);
+    l->name += (storages.size() == 1 ? " " : ", ") + a->storage->name();
+  }
 
   auto receive_buffers = std::make_shared<std::vector<std::vector<std::byte>>>();
-  l->start = [topology, storage, tag, receive_buffers](launch& self) {
+  l->start = [topology, storages, tag, receive_buffers](launch& self) {
     const auto& peers = topology->plan().peers;
-    const std::size_t bytes = storage->element_size();
     const std::size_t ghost_begin = topology->owned_size();
     const int me = runtime::rank();
+    std::size_t bytes = 0;  // of one entity, all fields
+    for (auto* s : storages) bytes += s->element_size();
     receive_buffers->assign(peers.size(), {});
     // Send buffers must live until the sends complete: keep them with the receive buffers.
     auto send_buffers = std::make_shared<std::vector<std::vector<std::byte>>>(peers.size());
@@ -123,9 +182,9 @@ launch_ptr executor::record_ghost_copy(const field_access& a, field_state& state
       const auto& peer = peers[p];
       auto& send = (*send_buffers)[p];
       send.resize(peer.send.size() * bytes);
-      storage->pack(peer.send.data(), peer.send.size(), send.data());
+      data::pack_fields(storages, peer.send, send.data());
       if (peer.rank == me) {  // periodic images of this rank's own entities
-        storage->unpack(send.data(), ghost_begin + peer.receive_first, peer.receive_count);
+        data::unpack_fields(storages, send.data(), ghost_begin + peer.receive_first, peer.receive_count);
         continue;
       }
       auto& receive = (*receive_buffers)[p];
@@ -137,59 +196,102 @@ launch_ptr executor::record_ghost_copy(const field_access& a, field_state& state
                 runtime::communicator(), &requests[1]);
       self.requests.insert(self.requests.end(), requests, requests + 2);
     }
-    self.finish = [topology, storage, receive_buffers, send_buffers, me] {
+    self.finish = [topology, storages, receive_buffers, send_buffers, me] {
       const auto& finished_peers = topology->plan().peers;
       const std::size_t begin = topology->owned_size();
       for (std::size_t p = 0; p < finished_peers.size(); ++p)
         if (finished_peers[p].rank != me)
-          storage->unpack((*receive_buffers)[p].data(), begin + finished_peers[p].receive_first,
-                          finished_peers[p].receive_count);
+          data::unpack_fields(storages, (*receive_buffers)[p].data(), begin + finished_peers[p].receive_first,
+                              finished_peers[p].receive_count);
     };
   };
 
-  region_state& owned = state.regions[0];
-  region_state& ghost = state.regions[1];
-  owned.readers.push_back(l);
-  ghost.last_writer = l;
-  ghost.readers.clear();
-  state.ghosts_valid = true;
+  for (const field_access* a : fields) {
+    field_state& state = fields_[{topology->instance_id(), a->field}];
+    state.regions[0].readers.push_back(l);
+    state.regions[1].last_writer = l;
+    state.regions[1].readers.clear();
+    state.ghosts_valid = true;
+  }
   l->sequence = next_sequence_++;
   queue_.push_back(l);
   return l;
 }
 
-bool executor::ready(const launch& l) const {
+bool executor::ready(launch& l) {
   if (l.state != launch_state::recorded) return false;
-  for (auto& d : l.dependencies)
-    if (d->state != launch_state::done) return false;
-  return l.kind != launch_kind::reduction || l.collective_index == next_collective_started_;
+  // Collectives start (or are cancelled) in program order, the same on every rank.
+  if (l.kind == launch_kind::reduction && l.collective_index != next_collective_started_) return false;
+  const launch* failed = nullptr;
+  for (auto& d : l.dependencies) {
+    if (d->state == launch_state::failed) failed = d.get();
+    else if (d->state != launch_state::done) return false;
+  }
+  for (auto& d : l.started) {
+    if (d->state == launch_state::failed) failed = d.get();
+    else if (d->state == launch_state::recorded) return false;
+  }
+  if (!failed) return true;
+  // Cancelled: it never runs, and says which failure it follows.
+  if (l.kind == launch_kind::reduction) ++next_collective_started_;
+  auto error = std::make_exception_ptr(std::runtime_error(
+    "'" + l.name + "' cancelled because '" + failed->failure_origin + "' failed: " + what_of(failed->error)));
+  l.begin_time = now();
+  fail(l, error, failed->failure_origin);
+  return false;
 }
 
-void executor::begin(launch& l) {
+void executor::begin(const launch_ptr& launched) {
+  launch& l = *launched;
   if (l.kind == launch_kind::reduction) ++next_collective_started_;
   l.state = launch_state::in_flight;
   l.begin_time = now();
+  const bool was_inside = inside_launch_;
   inside_launch_ = true;
   try {
     l.start(l);
   } catch (...) {
-    inside_launch_ = false;
-    throw;
+    inside_launch_ = was_inside;
+    ++failures_;
+    fail(l, std::current_exception(), l.name);
+    if (first_failure_.empty())
+      first_failure_ = "'" + l.name + "' failed on rank " + std::to_string(runtime::rank()) + ": " + what_of(l.error);
+    unobserved_.push_back(launched);
+    return;
   }
-  inside_launch_ = false;
+  inside_launch_ = was_inside;
   if (l.requests.empty()) complete(l);
+}
+
+void executor::note(const launch& l) {
+  if (l.kind == launch_kind::task && l.state == launch_state::done) timers::add(l.name, l.end_time - l.begin_time);
+  if (tracing_)
+    trace_.push_back({l.sequence, l.name, l.state == launch_state::failed ? "failed" : kind_name(l.kind), l.begin_time,
+                      l.end_time, l.dependency_sequences});
 }
 
 void executor::complete(launch& l) {
   if (l.finish) l.finish();
   l.state = launch_state::done;
   l.end_time = now();
+  note(l);
   l.dependencies.clear();  // do not keep the history alive
+  l.started.clear();
   l.requests.clear();
   l.start = nullptr;
   l.finish = nullptr;
-  if (l.kind == launch_kind::task) timers::add(l.name, l.end_time - l.begin_time);
-  if (tracing_) trace_.push_back({l.sequence, l.name, kind_name(l.kind), l.begin_time, l.end_time});
+}
+
+void executor::fail(launch& l, std::exception_ptr error, const std::string& origin) {
+  l.state = launch_state::failed;
+  l.error = std::move(error);
+  l.failure_origin = origin;
+  l.end_time = now();
+  note(l);
+  l.dependencies.clear();
+  l.started.clear();
+  l.start = nullptr;
+  l.finish = nullptr;
 }
 
 bool executor::progress() {
@@ -197,7 +299,7 @@ bool executor::progress() {
   // Communication first, so that it overlaps with the tasks that follow.
   for (auto& l : queue_)
     if (l->communicates() && ready(*l)) {
-      begin(*l);
+      begin(l);
       progressed = true;
     }
   // Then tasks in program order; stop after one if communication waits to start, so that it
@@ -205,12 +307,13 @@ bool executor::progress() {
   bool communication_waiting = false;
   for (auto& l : queue_)
     communication_waiting |= l->communicates() && l->state == launch_state::recorded;
-  for (auto& l : queue_)
+  for (auto& l : queue_) {
     if (!l->communicates() && ready(*l)) {
-      begin(*l);
+      begin(l);
       progressed = true;
       if (communication_waiting) break;
     }
+  }
   for (auto& l : queue_) {
     if (l->state != launch_state::in_flight) continue;
     int flag = 0;
@@ -220,13 +323,44 @@ bool executor::progress() {
       progressed = true;
     }
   }
-  queue_.erase(std::remove_if(queue_.begin(), queue_.end(),
-                              [](const launch_ptr& l) { return l->state == launch_state::done; }),
+  const auto before = queue_.size();
+  queue_.erase(std::remove_if(queue_.begin(), queue_.end(), [](const launch_ptr& l) { return l->finished(); }),
                queue_.end());
-  return progressed;
+  return progressed || queue_.size() != before;
+}
+
+bool executor::poll() {
+  if (polling_) return false;
+  polling_ = true;
+  bool in_flight = false;
+  for (auto& l : queue_) {
+    if (l->state != launch_state::in_flight || !l->communicates()) continue;
+    int flag = 0;
+    MPI_Testall(static_cast<int>(l->requests.size()), l->requests.data(), &flag, MPI_STATUSES_IGNORE);
+    if (flag) complete(*l);
+    else in_flight = true;
+  }
+  // Safe while a task runs: a ready copy depends on nothing unfinished, and the running task
+  // neither writes its owned values (it would wait for the copy) nor reads its ghosts.
+  for (auto& l : queue_)
+    if (l->communicates() && ready(*l)) {
+      begin(l);
+      in_flight |= l->state == launch_state::in_flight;
+    }
+  polling_ = false;
+  return in_flight;
+}
+
+void executor::abort_run() const {
+  std::cerr << "flecsi_lite: rank " << runtime::rank() << ": " << first_failure_
+            << "; the other ranks wait for this rank's results, so the run is aborted" << std::endl;
+  MPI_Abort(runtime::communicator(), 3);
+  std::abort();
 }
 
 void executor::block_until_any_request() {
+  // A rank with a failure cannot count on the others (they may wait for its cancelled messages).
+  if (failures_ && runtime::size() > 1) abort_run();
   // Nothing is ready: wait until any request of any launch in flight completes.
   std::vector<MPI_Request> all;
   std::vector<std::pair<launch*, std::size_t>> owner;
@@ -245,14 +379,24 @@ void executor::block_until_any_request() {
 
 void executor::wait(const launch& target) {
   if (inside_launch_) throw std::logic_error("executor: a running task may not wait for others");
-  while (target.state != launch_state::done)
+  while (!target.finished())
     if (!progress()) block_until_any_request();
+  if (target.state != launch_state::failed) return;
+  // Reported through this future: the failure it follows is no longer unobserved.
+  unobserved_.erase(std::remove_if(unobserved_.begin(), unobserved_.end(),
+                                   [&target](const launch_ptr& f) { return f->failure_origin == target.failure_origin; }),
+                    unobserved_.end());
+  std::rethrow_exception(target.error);
 }
 
 void executor::wait_all() {
   if (inside_launch_) throw std::logic_error("executor: a running task may not wait for others");
   while (!queue_.empty())
     if (!progress()) block_until_any_request();
+  if (unobserved_.empty()) return;
+  const auto error = unobserved_.front()->error;
+  unobserved_.clear();
+  std::rethrow_exception(error);
 }
 
 void executor::before_layout_change(std::uint64_t) { wait_all(); }

@@ -4,6 +4,17 @@
 // soon as their inputs are ready — communication first (non-blocking MPI), so that copies
 // overlap with independent tasks.
 //
+// A copy starts when its data is ready: once a field's ghosts have been read, every later write
+// of its owned values is followed at once by a copy (recorded eagerly), so the messages travel
+// while the tasks in between run. All the stale fields of one topology that a launch needs (or
+// that one writer made stale) travel together, one message per peer. Long loops (forall) call
+// poll() between chunks, so MPI advances while tasks run.
+//
+// A task that throws fails; launches that depend on it are cancelled; get() of their futures
+// rethrows (the task's own exception, or "cancelled because ... failed"). On several ranks the
+// others wait for the failed rank's messages, so a rank with a failure aborts the communicator
+// (with the failure's message) rather than block or finalize.
+//
 // Ghost values of a field are STALE after a write to its owned region (shared entities may have
 // changed) or a layout change of its topology; they are VALID after a ghost copy or a write to
 // the ghost region. Every rank records the same launches (SPMD), so every rank inserts the same
@@ -41,10 +52,15 @@ public:
                     std::vector<launch_ptr> after, std::function<void(launch&)> start,
                     std::function<void()> finish = {});
 
-  /// Runs launches until `target` is done.
+  /// Runs launches until `target` is finished; rethrows its error when it failed.
   void wait(const launch& target);
-  /// Runs every recorded launch.
+  /// Runs every recorded launch; rethrows the first failure nobody has seen through a future.
   void wait_all();
+  /// Between chunks of long loops inside a task: completes communication whose requests are done
+  /// and posts copies that became ready. True while some communication is in flight.
+  bool poll();
+  /// Forgets the failures seen so far (a program that caught them on every rank and goes on).
+  void forgive_failures() { failures_ = 0; unobserved_.clear(); }
 
   std::size_t pending() const { return queue_.size(); }
   std::uint64_t ghost_copies_started() const { return ghost_copies_; }
@@ -70,14 +86,22 @@ private:
   struct field_state {
     region_state regions[2];  // owned, ghost
     bool ghosts_valid = false;
+    bool ghosts_read = false;  // some launch has read the ghosts: copy eagerly after writes
   };
   using field_key = std::pair<std::uint64_t, std::size_t>;  // (topology instance, field id)
 
   void add_dependencies(launch& l, field_state& state, region r, privilege p);
-  launch_ptr record_ghost_copy(const field_access& a, field_state& state);
-  bool ready(const launch& l) const;
-  void begin(launch& l);
+  /// One copy of the ghosts of `fields` (all on one topology): one message per peer.
+  launch_ptr record_ghost_copy(const std::vector<const field_access*>& fields);
+  /// Records one copy per topology for the stale fields among `accesses` that `wanted` selects.
+  template<class Wanted>
+  void record_ghost_copies(const std::vector<field_access>& accesses, Wanted wanted);
+  bool ready(launch& l);
+  void begin(const launch_ptr& l);
   void complete(launch& l);
+  void fail(launch& l, std::exception_ptr error, const std::string& origin);
+  void note(const launch& l);  // trace and timers
+  [[noreturn]] void abort_run() const;
   /// One scheduling round; false when nothing could progress without blocking.
   bool progress();
   void block_until_any_request();
@@ -89,7 +113,10 @@ private:
   std::uint64_t next_collective_recorded_ = 0, next_collective_started_ = 0;
   std::uint64_t ghost_copies_ = 0;
   bool tracing_ = false;
-  bool inside_launch_ = false;
+  bool inside_launch_ = false, polling_ = false;
+  std::size_t failures_ = 0;                 // failed launches (their own exception)
+  std::vector<launch_ptr> unobserved_;       // failures no future's get() has reported
+  std::string first_failure_;
   std::vector<trace_event> trace_;
   std::chrono::steady_clock::time_point epoch_;
 };

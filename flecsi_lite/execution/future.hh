@@ -1,5 +1,6 @@
 // Futures of launches: get() runs the executor until the launch (and, for a reduction, its
-// collective) is done. A future can be passed to a task whose parameter is the value type:
+// collective) is done, and rethrows the launch's exception when it failed (or the cancellation,
+// naming the failed launch, when a launch it depended on failed). A future can be passed to a task whose parameter is the value type:
 // the task then depends on the launch that produces it.
 #pragma once
 
@@ -17,7 +18,7 @@ public:
   future(execution::launch_ptr l, std::shared_ptr<std::optional<T>> value)
     : launch_(std::move(l)), value_(std::move(value)) {}
 
-  bool ready() const { return !launch_ || launch_->state == execution::launch_state::done; }
+  bool ready() const { return !launch_ || launch_->finished(); }
   void wait() const {
     if (launch_) execution::executor::instance().wait(*launch_);
   }
@@ -40,7 +41,7 @@ public:
   using value_type = void;
   future() = default;
   explicit future(execution::launch_ptr l) : launch_(std::move(l)) {}
-  bool ready() const { return !launch_ || launch_->state == execution::launch_state::done; }
+  bool ready() const { return !launch_ || launch_->finished(); }
   void wait() const {
     if (launch_) execution::executor::instance().wait(*launch_);
   }
