@@ -351,6 +351,11 @@ bool executor::poll() {
   return in_flight;
 }
 
+bool executor::communication_in_flight() const {
+  return std::any_of(queue_.begin(), queue_.end(),
+                     [](const launch_ptr& l) { return l->communicates() && l->state == launch_state::in_flight; });
+}
+
 void executor::abort_run() const {
   std::cerr << "flecsi_lite: rank " << runtime::rank() << ": " << first_failure_
             << "; the other ranks wait for this rank's results, so the run is aborted" << std::endl;

@@ -63,6 +63,8 @@ public:
   void forgive_failures() { failures_ = 0; unobserved_.clear(); }
 
   std::size_t pending() const { return queue_.size(); }
+  /// Whether some ghost copy or collective has posted requests that have not completed.
+  bool communication_in_flight() const;
   std::uint64_t ghost_copies_started() const { return ghost_copies_; }
 
   /// Tracing: every completed launch is recorded while enabled (also with --trace FILE).
