@@ -57,7 +57,8 @@ def load(path):
 
 
 def is_task(launch):
-    return launch["tid"] == 0
+    """Tasks compute; ghost copies and collectives ("ghost_copy", "reduction") communicate."""
+    return launch["kind"] == "task" or (launch["kind"] == "failed" and launch["tid"] == 0)
 
 
 def critical_path(launches):

@@ -3,6 +3,7 @@
 // cancellation.
 #include "flecsi_lite/execution/executor.hh"
 
+#include "flecsi_lite/execution/detail/ghost_copy.hh"
 #include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/runtime/log.hh"
@@ -41,7 +42,7 @@ executor& executor::instance() {
 
 executor::executor() : epoch_(std::chrono::steady_clock::now()) {
   data::set_layout_listener(this);
-  detail::poll_hook = [] { return executor::instance().poll(); };
+  flecsi_lite::detail::poll_hook = [] { return executor::instance().poll(); };
   const std::string trace_file = runtime::current_settings().trace_file;
   tracing_ = !trace_file.empty();
   runtime::at_finalize([this, trace_file] {
@@ -61,7 +62,7 @@ executor::executor() : epoch_(std::chrono::steady_clock::now()) {
 
 executor::~executor() {
   data::set_layout_listener(nullptr);
-  detail::poll_hook = nullptr;
+  flecsi_lite::detail::poll_hook = nullptr;
 }
 
 double executor::now() const {
@@ -71,16 +72,17 @@ double executor::now() const {
 void executor::add_dependencies(launch& l, field_state& state, region r, privilege p) {
   region_state& rs = state.regions[static_cast<int>(r)];
   if (p == na) return;
-  auto depend_on = [&l](const launch_ptr& other, bool start_suffices) {
+  enum how { result, order, start };
+  auto depend_on = [&l](const launch_ptr& other, how h) {
     if (!other || other->state == launch_state::done) return;
-    if (start_suffices && other->state == launch_state::in_flight) return;
-    (start_suffices ? l.started : l.dependencies).push_back(other);
+    if (h == start && other->state == launch_state::in_flight) return;
+    (h == result ? l.dependencies : h == order ? l.ordered_after : l.started).push_back(other);
     l.dependency_sequences.push_back(other->sequence);
   };
-  depend_on(rs.last_writer, false);  // read after write, write after write
+  depend_on(rs.last_writer, reads(p) ? result : order);  // read after write, write after write
   if (writes(p))
     for (auto& reader : rs.readers)  // write after read; a copy reads owned values when it starts
-      depend_on(reader, reader->kind == launch_kind::ghost_copy && r == region::owned);
+      depend_on(reader, reader->kind == launch_kind::ghost_copy && r == region::owned ? start : order);
 }
 
 template<class Wanted>
@@ -135,7 +137,14 @@ launch_ptr executor::record(std::string name, launch_kind kind,
         rs.readers.push_back(l);
       }
     }
-    if (reads(a.ghost)) state.ghosts_read = true;
+    if (reads(a.ghost)) {
+      state.ghosts_read = true;
+      state.eager_after.clear();  // the eager copy served a reader
+    }
+    if (writes(a.owned) && !state.eager_after.empty()) {
+      state.copy_wasted_after.insert(state.eager_after);  // overwritten before anyone read it
+      state.eager_after.clear();
+    }
     if (writes(a.owned)) state.ghosts_valid = false;  // shared values may have changed
     if (writes(a.ghost)) state.ghosts_valid = true;   // the task defined the ghost values
   }
@@ -144,8 +153,11 @@ launch_ptr executor::record(std::string name, launch_kind kind,
   queue_.push_back(l);
   // The data of these copies is final once this launch has run: send it then, not when the
   // next reader is recorded.
-  record_ghost_copies(accesses,
-                      [](const field_access& a, field_state& state) { return writes(a.owned) && state.ghosts_read; });
+  record_ghost_copies(accesses, [&l](const field_access& a, field_state& state) {
+    if (!writes(a.owned) || !state.ghosts_read || state.copy_wasted_after.count(l->name)) return false;
+    state.eager_after = l->name;
+    return true;
+  });
   // Scheduling scans the queue, so keep it short: run launches once the window is full.
   if (queue_.size() >= window)
     while (queue_.size() > window / 2)
@@ -168,43 +180,7 @@ launch_ptr executor::record_ghost_copy(const std::vector<const field_access*>& f
     l->name += (storages.size() == 1 ? " " : ", ") + a->storage->name();
   }
 
-  auto receive_buffers = std::make_shared<std::vector<std::vector<std::byte>>>();
-  l->start = [topology, storages, tag, receive_buffers](launch& self) {
-    const auto& peers = topology->plan().peers;
-    const std::size_t ghost_begin = topology->owned_size();
-    const int me = runtime::rank();
-    std::size_t bytes = 0;  // of one entity, all fields
-    for (auto* s : storages) bytes += s->element_size();
-    receive_buffers->assign(peers.size(), {});
-    // Send buffers must live until the sends complete: keep them with the receive buffers.
-    auto send_buffers = std::make_shared<std::vector<std::vector<std::byte>>>(peers.size());
-    for (std::size_t p = 0; p < peers.size(); ++p) {
-      const auto& peer = peers[p];
-      auto& send = (*send_buffers)[p];
-      send.resize(peer.send.size() * bytes);
-      data::pack_fields(storages, peer.send, send.data());
-      if (peer.rank == me) {  // periodic images of this rank's own entities
-        data::unpack_fields(storages, send.data(), ghost_begin + peer.receive_first, peer.receive_count);
-        continue;
-      }
-      auto& receive = (*receive_buffers)[p];
-      receive.resize(peer.receive_count * bytes);
-      MPI_Request requests[2];
-      MPI_Irecv(receive.data(), static_cast<int>(receive.size()), MPI_BYTE, peer.rank, tag,
-                runtime::communicator(), &requests[0]);
-      MPI_Isend(send.data(), static_cast<int>(send.size()), MPI_BYTE, peer.rank, tag,
-                runtime::communicator(), &requests[1]);
-      self.requests.insert(self.requests.end(), requests, requests + 2);
-    }
-    self.finish = [topology, storages, receive_buffers, send_buffers, me] {
-      const auto& finished_peers = topology->plan().peers;
-      const std::size_t begin = topology->owned_size();
-      for (std::size_t p = 0; p < finished_peers.size(); ++p)
-        if (finished_peers[p].rank != me)
-          data::unpack_fields(storages, (*receive_buffers)[p].data(), begin + finished_peers[p].receive_first,
-                              finished_peers[p].receive_count);
-    };
-  };
+  l->start = detail::ghost_copy_start(topology, std::move(storages), tag);
 
   for (const field_access* a : fields) {
     field_state& state = fields_[{topology->instance_id(), a->field}];
@@ -227,17 +203,18 @@ bool executor::ready(launch& l) {
     if (d->state == launch_state::failed) failed = d.get();
     else if (d->state != launch_state::done) return false;
   }
-  for (auto& d : l.started) {
-    if (d->state == launch_state::failed) failed = d.get();
-    else if (d->state == launch_state::recorded) return false;
-  }
+  for (auto& d : l.ordered_after)
+    if (!d->finished()) return false;
+  for (auto& d : l.started)
+    if (d->state == launch_state::recorded) return false;
   if (!failed) return true;
   // Cancelled: it never runs, and says which failure it follows.
   if (l.kind == launch_kind::reduction) ++next_collective_started_;
   auto error = std::make_exception_ptr(std::runtime_error(
-    "'" + l.name + "' cancelled because '" + failed->failure_origin + "' failed: " + what_of(failed->error)));
+    "'" + l.name + "' cancelled because '" + failed->failure_origin + "' failed: " + failed->failure_reason));
   l.begin_time = now();
   fail(l, error, failed->failure_origin);
+  l.failure_reason = failed->failure_reason;
   return false;
 }
 
@@ -254,8 +231,9 @@ void executor::begin(const launch_ptr& launched) {
     inside_launch_ = was_inside;
     ++failures_;
     fail(l, std::current_exception(), l.name);
+    l.failure_reason = what_of(l.error);
     if (first_failure_.empty())
-      first_failure_ = "'" + l.name + "' failed on rank " + std::to_string(runtime::rank()) + ": " + what_of(l.error);
+      first_failure_ = "'" + l.name + "' failed on rank " + std::to_string(runtime::rank()) + ": " + l.failure_reason;
     unobserved_.push_back(launched);
     return;
   }
@@ -276,6 +254,7 @@ void executor::complete(launch& l) {
   l.end_time = now();
   note(l);
   l.dependencies.clear();  // do not keep the history alive
+  l.ordered_after.clear();
   l.started.clear();
   l.requests.clear();
   l.start = nullptr;
@@ -289,6 +268,7 @@ void executor::fail(launch& l, std::exception_ptr error, const std::string& orig
   l.end_time = now();
   note(l);
   l.dependencies.clear();
+  l.ordered_after.clear();
   l.started.clear();
   l.start = nullptr;
   l.finish = nullptr;

@@ -31,6 +31,7 @@
 #include <chrono>
 #include <deque>
 #include <map>
+#include <set>
 
 namespace flecsi_lite::execution {
 
@@ -89,6 +90,10 @@ private:
     region_state regions[2];  // owned, ghost
     bool ghosts_valid = false;
     bool ghosts_read = false;  // some launch has read the ghosts: copy eagerly after writes
+    // The writer after which the last eager copy went out, until a launch reads the ghosts it
+    // delivered; writers whose copy was overwritten unread get no eager copy again.
+    std::string eager_after;
+    std::set<std::string> copy_wasted_after;
   };
   using field_key = std::pair<std::uint64_t, std::size_t>;  // (topology instance, field id)
 

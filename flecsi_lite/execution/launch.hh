@@ -1,7 +1,8 @@
 // One recorded unit of work of the executor: a task, a ghost copy or a reduction's collective,
 // with the launches it must wait for. Communication launches post non-blocking MPI requests when
-// they start and finish when those complete. A launch that throws FAILS; one that depends on a
-// failed launch is CANCELLED (never runs) and fails with a message naming the first failure.
+// they start and finish when those complete. A launch that throws FAILS; one that reads the
+// results of a failed launch is CANCELLED (never runs) and fails with a message naming the
+// failure; one merely ordered after it (write after write, write after read) runs.
 #pragma once
 
 #include <mpi.h>
@@ -23,8 +24,9 @@ struct launch {
   std::string name;
   launch_kind kind = launch_kind::task;
   launch_state state = launch_state::recorded;
-  std::vector<std::shared_ptr<launch>> dependencies;  // must be done
-  std::vector<std::shared_ptr<launch>> started;       // must have started (a copy has packed)
+  std::vector<std::shared_ptr<launch>> dependencies;  // must be done: their results are read
+  std::vector<std::shared_ptr<launch>> ordered_after;  // must be finished (done or failed)
+  std::vector<std::shared_ptr<launch>> started;        // must have started (a copy has packed)
   std::vector<std::uint64_t> dependency_sequences;    // for the trace (critical path)
   std::function<void(launch&)> start;  // runs the task, or packs and posts the requests
   std::function<void()> finish;        // after the requests complete: unpack, combine
@@ -33,6 +35,7 @@ struct launch {
   double begin_time = 0, end_time = 0;
   std::exception_ptr error;    // why it failed: its own exception, or a cancellation
   std::string failure_origin;  // the launch whose exception caused the failure
+  std::string failure_reason;  // that exception's message
 
   bool communicates() const { return kind != launch_kind::task; }
   bool finished() const { return state == launch_state::done || state == launch_state::failed; }

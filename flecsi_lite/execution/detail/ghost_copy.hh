@@ -1,0 +1,18 @@
+// Internals of the executor: the start of one ghost copy of several fields of a topology, one
+// message per peer (all fields packed together, unpacked per field when the messages arrive).
+#pragma once
+
+#include "flecsi_lite/data/field_storage.hh"
+#include "flecsi_lite/data/topology_base.hh"
+#include "flecsi_lite/execution/launch.hh"
+
+#include <functional>
+#include <vector>
+
+namespace flecsi_lite::execution::detail {
+
+/// The launch's start: packs and posts; sets the launch's finish (unpack).
+std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
+                                              std::vector<data::field_storage_base*> storages, int tag);
+
+} // namespace flecsi_lite::execution::detail

@@ -1,0 +1,52 @@
+// The start of a ghost copy (detail/ghost_copy.hh): pack every field's shared values into one
+// buffer per peer, post one receive and one send per peer; the finish unpacks per field.
+#include "flecsi_lite/execution/detail/ghost_copy.hh"
+
+#include "flecsi_lite/runtime/context.hh"
+
+#include <memory>
+
+namespace flecsi_lite::execution::detail {
+
+std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
+                                              std::vector<data::field_storage_base*> storages, int tag) {
+  auto receive_buffers = std::make_shared<std::vector<std::vector<std::byte>>>();
+  return [topology, storages, tag, receive_buffers](launch& self) {
+    const auto& peers = topology->plan().peers;
+    const std::size_t ghost_begin = topology->owned_size();
+    const int me = runtime::rank();
+    std::size_t bytes = 0;  // of one entity, all fields
+    for (auto* s : storages) bytes += s->element_size();
+    receive_buffers->assign(peers.size(), {});
+    // Send buffers must live until the sends complete: keep them with the receive buffers.
+    auto send_buffers = std::make_shared<std::vector<std::vector<std::byte>>>(peers.size());
+    for (std::size_t p = 0; p < peers.size(); ++p) {
+      const auto& peer = peers[p];
+      auto& send = (*send_buffers)[p];
+      send.resize(peer.send.size() * bytes);
+      data::pack_fields(storages, peer.send, send.data());
+      if (peer.rank == me) {  // periodic images of this rank's own entities
+        data::unpack_fields(storages, send.data(), ghost_begin + peer.receive_first, peer.receive_count);
+        continue;
+      }
+      auto& receive = (*receive_buffers)[p];
+      receive.resize(peer.receive_count * bytes);
+      MPI_Request requests[2];
+      MPI_Irecv(receive.data(), static_cast<int>(receive.size()), MPI_BYTE, peer.rank, tag,
+                runtime::communicator(), &requests[0]);
+      MPI_Isend(send.data(), static_cast<int>(send.size()), MPI_BYTE, peer.rank, tag,
+                runtime::communicator(), &requests[1]);
+      self.requests.insert(self.requests.end(), requests, requests + 2);
+    }
+    self.finish = [topology, storages, receive_buffers, send_buffers, me] {
+      const auto& finished_peers = topology->plan().peers;
+      const std::size_t begin = topology->owned_size();
+      for (std::size_t p = 0; p < finished_peers.size(); ++p)
+        if (finished_peers[p].rank != me)
+          data::unpack_fields(storages, (*receive_buffers)[p].data(), begin + finished_peers[p].receive_first,
+                              finished_peers[p].receive_count);
+    };
+  };
+}
+
+} // namespace flecsi_lite::execution::detail
