@@ -168,7 +168,8 @@ launch_ptr executor::record(std::string name, launch_kind kind,
 launch_ptr executor::record_ghost_copy(const std::vector<const field_access*>& fields) {
   data::topology_base* topology = fields.front()->topology;
   std::vector<data::field_storage_base*> storages;
-  const int tag = first_copy_tag + static_cast<int>(ghost_copies_++ % copy_tag_count);
+  const int tag = first_copy_tag + static_cast<int>(ghost_updates_++ % copy_tag_count);
+  ghost_copies_ += fields.size();  // field copies; they travel together, one message per peer
   auto l = std::make_shared<launch>();
   l->name = "ghost copy";
   l->kind = launch_kind::ghost_copy;

@@ -66,7 +66,10 @@ public:
   std::size_t pending() const { return queue_.size(); }
   /// Whether some ghost copy or collective has posted requests that have not completed.
   bool communication_in_flight() const;
+  /// Fields whose ghosts were copied (a copy of several fields counts each), and copy launches
+  /// (each one message per peer).
   std::uint64_t ghost_copies_started() const { return ghost_copies_; }
+  std::uint64_t ghost_updates_started() const { return ghost_updates_; }
 
   /// Tracing: every completed launch is recorded while enabled (also with --trace FILE).
   void enable_tracing(bool on) { tracing_ = on; }
@@ -118,7 +121,7 @@ private:
   std::map<field_key, field_state> fields_;
   std::uint64_t next_sequence_ = 0;
   std::uint64_t next_collective_recorded_ = 0, next_collective_started_ = 0;
-  std::uint64_t ghost_copies_ = 0;
+  std::uint64_t ghost_copies_ = 0, ghost_updates_ = 0;
   bool tracing_ = false;
   bool inside_launch_ = false, polling_ = false;
   std::size_t failures_ = 0;                 // failed launches (their own exception)
