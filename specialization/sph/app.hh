@@ -180,20 +180,16 @@ inline const flecsi_lite::io::attribute_value& state_entry(const flecsi_lite::io
   return found->second;
 }
 
-/// The checkpoint's parameters must be this run's but for the free keys (restart_free_keys) and
-/// allow_parameter_changes; then its particles, clock and output cadence.
+/// The checkpoint's particles, clock and output cadence; its program and dimension must be this
+/// run's, its parameters too but for the free keys (restart_free_keys) and allow_parameter_changes.
 template<int D>
 void restart(app_state<D>& s) {
   namespace io = flecsi_lite::io;
   const std::string& path = s.files.restart_file;
-  {
-    const io::h5part_reader in(path);
-    const auto contents = io::read_checkpoint(in);
-    const auto& written = state_entry(contents.state, "parameters", path);
-    flecsi_lite::app::require_same_parameters(path, io::attribute_as<std::string>(written, "run state 'parameters'"),
-                                              s.parameters_text, restart_free_keys(), s.allowed_changes);
-  }
-  const auto state = read_restart_checkpoint(s, path, {{"program", s.program}});
+  const auto state = read_restart_checkpoint(s, path, {{"program", s.program}});  // program, dimension first
+  const auto& written = state_entry(state, "parameters", path);
+  flecsi_lite::app::require_same_parameters(path, io::attribute_as<std::string>(written, "run state 'parameters'"),
+                                            s.parameters_text, restart_free_keys(), s.allowed_changes);
   s.next_output = io::attribute_as<double>(state_entry(state, "next_output", path), "run state 'next_output'");
   s.output_due = io::attribute_as<std::int64_t>(state_entry(state, "output_due", path), "run state 'output_due'");
   flecsi_lite::log::info() << s.program << ": restarting at step " << s.step << ", t = " << s.time << " from '"
