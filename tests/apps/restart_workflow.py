@@ -69,7 +69,7 @@ def resume_command(output):
     return []
 
 
-for name in ("full", "every3", "chunked"):
+for name in ("full", "every3", "chunked", "refused"):
     remove(name + ".h5part", name + ".checkpoint.h5part", name + ".statistics.txt", name + ".stop")
 
 # The uninterrupted run, and the same with a checkpoint every 3 steps: bitwise the same series (9).
@@ -143,9 +143,14 @@ out = run(1, common + files("refused") + ["--set", "restart_file=bad.h5part", "-
 check("gamma: checkpoint 1.4, this run 1.6" in out and "kernel: checkpoint" in out,
       "both changed keys named with both values\n" + out[-2000:])
 check("output_file" not in out.split("would change the solution")[-1], "free keys are not listed")
-run(1, common + files("refused") + ["--set", "restart_file=bad.h5part", "--set", "gamma=1.6", "--set",
-                                     "allow_parameter_changes=gamma", "--set", "max_steps=0",
-                                     "--set", "output_every=0.1", "--set", "end_time=0.1"])
+allowed = common + files("refused") + ["--set", "restart_file=bad.h5part", "--set", "gamma=1.6", "--set",
+                                        "allow_parameter_changes=gamma", "--set", "max_steps=50"]
+run(1, allowed)
+# Once more from the same checkpoint: the statistics file then holds only the first restart's mark.
+run(1, allowed)
+steps = [s[0]["step"] for s in series("refused.h5part")]
+check(steps == [42, 50], "a restart without an earlier output starts a series at its step; the second "
+      "restart replaced the first one's steps: %s" % steps)
 
 remove("bad.h5part")
 if failures:
