@@ -70,7 +70,9 @@ runtime::parameter_block<file_settings> file_parameters(const file_settings& def
       restart{"restart_file", f.restart_file}, initial{"initial_data", f.initial_data};
     // Checked at start-up, not when the file is first written after the run (or a checkpoint).
     require_writable(output);
-    if (f.checkpoint_every > 0) require_writable(checkpoint);
+    // Always, not only with checkpoint_every: a run that stops early (max_steps, wall_time_limit,
+    // stop_file) writes its checkpoint there.
+    require_writable(checkpoint);
     require_distinct(output, checkpoint);
     require_distinct(output, restart);
     require_distinct(output, initial);

@@ -12,7 +12,7 @@ namespace flecsi_lite::app {
 struct file_settings {
   std::string output_file;      ///< H5Part output
   double output_every = 0;      ///< simulation time between outputs; 0: first and last step only
-  std::string checkpoint_file;  ///< replaced at each checkpoint
+  std::string checkpoint_file;  ///< replaced at each checkpoint, and written when a run stops early
   long checkpoint_every = 0;    ///< steps between checkpoints; 0: none
   std::string restart_file;     ///< continue the run of this checkpoint
   std::string initial_data;     ///< H5Part file of the initial particles
@@ -22,7 +22,8 @@ struct file_settings {
 /// The keys output_file, output_every, checkpoint_file, checkpoint_every, restart_file,
 /// initial_data and initial_data_step with `defaults`; read() rejects (parameter_error, naming the
 /// keys) restart_file with initial_data; checkpoint_every without a checkpoint_file; an output or
-/// (used) checkpoint path that exists and is not a regular file, or whose folder is missing or not
+/// checkpoint path (written also when a run stops early) that exists and is not a regular file,
+/// or whose folder is missing or not
 /// writable; output_file equal to checkpoint_file, restart_file or initial_data, and
 /// checkpoint_file equal to initial_data (compared as resolved paths). checkpoint_file may equal
 /// restart_file: a new checkpoint replaces the one it continues from atomically.

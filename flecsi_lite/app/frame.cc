@@ -2,6 +2,9 @@
 // used-parameters file, the run, and errors as exit statuses.
 #include "flecsi_lite/app/frame.hh"
 
+#include "flecsi_lite/app/parameter_changes.hh"
+#include "flecsi_lite/app/run_limits.hh"
+
 #include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/io/collective_agreement.hh"
 #include "flecsi_lite/io/io_error.hh"
@@ -67,6 +70,8 @@ runtime::parameter_schema schema_of(const definition& app) {
   if (app.files) {
     file_parameters(*app.files).declare(schema);
     frame_file_parameters().declare(schema);
+    run_limit_parameters().declare(schema);
+    restart_parameters().declare(schema);
   }
   return schema;
 }
@@ -89,6 +94,17 @@ std::string used_parameters_path(const definition& app, const runtime::parameter
                        {"restart_file", files.restart_file},
                        {"initial_data", files.initial_data}});
   return path;
+}
+
+/// The stop file is removed when found: it must not be one of the run's files.
+void check_stop_file(const definition& app, const runtime::parameters& p) {
+  const file_settings files = file_parameters(*app.files).read(p);
+  check_distinct_file("stop_file", resolved_stop_file(run_limit_parameters().read(p), files.output_file, app.program),
+                      {{"output_file", files.output_file},
+                       {"checkpoint_file", files.checkpoint_file},
+                       {"restart_file", files.restart_file},
+                       {"initial_data", files.initial_data},
+                       {"used_parameters_file", used_parameters_file(app.program, p)}});
 }
 
 /// Rank 0 writes the file (io::write_text_file: never over anything but a regular file); every
@@ -140,6 +156,7 @@ int main(int argc, char** argv, const definition& app) {
   try {
     const auto p = runtime::parameters::load(schema, rt.opts().get("parameters"), overrides_of(app, rt.opts()));
     print_banner(app);
+    if (app.files) check_stop_file(app, p);
     if (app.files && !run_context::control_model_only())
       if (const std::string path = used_parameters_path(app, p); !path.empty()) write_used_parameters(app, path, p);
     return app.run(run_context(app, p, rt.opts()));

@@ -9,8 +9,11 @@
 #include "flecsi_lite/io/step_info.hh"
 #include "flecsi_lite/runtime/context.hh"
 
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace flecsi_lite::io {
@@ -37,5 +40,10 @@ struct checkpoint_contents {
 /// Collective. The time and run state of a checkpoint; read its arrays with reader.read<T>(0, name).
 /// Throws file_error when the file is not a checkpoint.
 checkpoint_contents read_checkpoint(const h5part_reader& reader);
+
+/// Collective: an id that more than one of the `count` ids of all ranks share (the smallest), or
+/// none. Each id goes to rank id mod size, which sorts what it received: O(N / ranks) memory.
+std::optional<std::uint64_t> duplicate_id(const std::uint64_t* ids, std::size_t count,
+                                          MPI_Comm comm = runtime::communicator());
 
 } // namespace flecsi_lite::io

@@ -46,7 +46,12 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
   int append_to_copy = 0;
   if (how == mode::append) {
     agree(comm_, [&] {
-      if (rank_of(comm_) != 0 || !std::filesystem::exists(path_)) return;
+      if (rank_of(comm_) != 0) return;
+      // A run stopped hard (killed) left its flushed steps only in the partial file: continue it.
+      if (!std::filesystem::exists(path_)) {
+        append_to_copy = std::filesystem::is_regular_file(partial_path());
+        return;
+      }
       std::error_code error;
       std::filesystem::copy_file(path_, partial_path(),
                                  std::filesystem::copy_options::overwrite_existing, error);
@@ -69,7 +74,9 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
   std::optional<failure_record> failed;
   if (id < 0)
     failed = failure_record{failure::file, "cannot " + std::string(append_to_copy ? "open" : "create") +
-                                             " '" + partial_path() + "' for writing" + hdf5_reason()};
+                                             " '" + partial_path() + "' for writing" + hdf5_reason() +
+                                             (append_to_copy ? " (to continue the series in it; remove it or "
+                                                               "choose another output file)" : "")};
   file_ = file_handle(id);
   try {
     raise_if_any(comm_, failed);
@@ -86,6 +93,7 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
           throw layout_error("cannot append to '" + path_ + "': its steps are not Step#0 to Step#" +
                              std::to_string(steps.size() - 1));
       steps_written_ = static_cast<std::int64_t>(steps.size());
+      last_iteration_ = steps_written_ > 0 ? iteration_of(steps_written_ - 1) : -1;
     });
   }
 }
@@ -153,6 +161,36 @@ void h5part_writer::describe_run(const run_description& run) {
   set_attribute(h5part::attribute::dimension, std::int64_t{run.dimension});
 }
 
+std::int64_t h5part_writer::iteration_of(std::int64_t step) const {
+  const std::string name = h5part::step_group_name(step);
+  auto group = group_handle(H5Gopen2(file_.get(), name.c_str(), H5P_DEFAULT));
+  if (!group) throw io_error(failure::file, "cannot open " + name + " of '" + partial_path() + "'" + hdf5_reason());
+  if (!has_attribute(group.get(), h5part::attribute::step)) return step;
+  const std::string what = "attribute 'step' of " + name + " in '" + path_ + "'";
+  return attribute_as<std::int64_t>(read_attribute(group.get(), h5part::attribute::step, what), what);
+}
+
+std::int64_t h5part_writer::drop_steps_from(std::int64_t first_dropped) {
+  hdf5_quiet_scope quiet;
+  std::int64_t dropped = 0;
+  agree(comm_, [&] {
+    require_open("drop_steps_from");
+    if (in_step()) throw usage_error("drop_steps_from: step " + std::to_string(steps_written_) + " of '" + path_ +
+                                     "' is open");
+    // Every rank unlinks the same groups: a metadata change, collective in parallel HDF5.
+    while (steps_written_ > 0 && iteration_of(steps_written_ - 1) >= first_dropped) {
+      const std::string name = h5part::step_group_name(steps_written_ - 1);
+      if (H5Ldelete(file_.get(), name.c_str(), H5P_DEFAULT) < 0)
+        throw io_error(failure::system, "cannot remove " + name + " from '" + partial_path() + "'" + hdf5_reason());
+      --steps_written_;
+      ++dropped;
+    }
+    last_iteration_ = steps_written_ > 0 ? iteration_of(steps_written_ - 1) : -1;
+    if (dropped) write_attribute(file_.get(), h5part::attribute::num_steps, std::int64_t{steps_written_});
+  });
+  return dropped;
+}
+
 void h5part_writer::begin_step(const step_info& info) {
   hdf5_quiet_scope quiet;
   char text[96];
@@ -181,6 +219,7 @@ void h5part_writer::begin_step(const step_info& info) {
     write_attribute(group.get(), h5part::attribute::dt, info.dt);
   });
   step_group_ = std::move(group);
+  last_iteration_ = info.step;
   step_datasets_.clear();
   step_length_.reset();
 }

@@ -50,7 +50,8 @@ class h5part_writer {
 public:
   enum class mode {
     create,  // a new series: the partial file starts empty
-    append   // continue the complete file `path` (a copy of it), or create it when absent
+    append   // continue the complete file `path` (a copy of it), or the `<path>.partial` an
+             // interrupted run left when `path` is absent, or create it when both are absent
   };
 
   explicit h5part_writer(std::string path, MPI_Comm comm = runtime::communicator(),
@@ -80,6 +81,12 @@ public:
   void write(const std::string& name, const Container& values) {
     write(name, values.data(), static_cast<std::size_t>(values.size()));
   }
+  /// Appending (no open step): unlinks the last steps while their `step` attribute (the
+  /// iteration) is >= `first_dropped`, so that a restart at iteration N continues the series
+  /// after what the run it continues wrote up to N; updates NumSteps. Returns the steps dropped.
+  std::int64_t drop_steps_from(std::int64_t first_dropped);
+  /// The `step` attribute of the last step written (or found when appending); -1 without steps.
+  std::int64_t last_iteration() const { return last_iteration_; }
   /// An extra attribute of the current step.
   void set_step_attribute(const std::string& name, const attribute_value& value);
   /// Closes the step, updates NumSteps and flushes the file.
@@ -106,6 +113,7 @@ private:
   void write_array(const std::string& name, element_type type, const void* data,
                    std::size_t local_count);
   void require_open(const char* operation) const;
+  std::int64_t iteration_of(std::int64_t step) const;  // inside agree()
   void abandon() noexcept;
 
   std::string path_;
@@ -113,6 +121,7 @@ private:
   hdf5_handle file_;
   hdf5_handle step_group_;
   std::int64_t steps_written_ = 0;
+  std::int64_t last_iteration_ = -1;
   bool committing_ = false;                      // finished, the rename still to come
   std::set<std::string> step_datasets_;          // names written in the open step
   std::optional<std::uint64_t> step_length_;     // global length of the open step's datasets

@@ -2,7 +2,9 @@
 // reports: the settings read from the parameters, initial particles from the problem, from an
 // H5Part file or from a checkpoint, the H5Part output at a cadence, checkpoints, the statistics
 // file (statistics.hh), the particles, kernel and EOS in the start-up banner, and main() on the
-// framework's app frame (flecsi_lite/app.hh).
+// framework's app frame (flecsi_lite/app.hh). Restarts continue the output series and the
+// statistics file; a run that stops before end_time (max_steps, wall_time_limit, stop_file)
+// writes a checkpoint and prints the one command that resumes it.
 //
 //   struct my_run : sph::app_state<D> { my::problem problem; };
 //   auto m = sph::make_app_control_model<my_run>({set_domain, create_particles});
@@ -21,10 +23,11 @@
 #include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"
 
-#include <functional>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -45,12 +48,47 @@ struct app_state : simulation<D> {
   statistics_settings statistics_keys;  ///< statistics_file resolved ("auto" replaced; empty: none)
   statistics_log statistics;
   double statistics_dt = 0;  ///< the step about to be taken: the dt of the next row
+  flecsi_lite::app::stop_monitor stop;  ///< wall_time_limit and stop_file
+  std::string stop_reason;              ///< why the run stopped before end_time ("": it did not)
+  std::string allowed_changes;          ///< allow_parameter_changes
+  std::string resume_command;           ///< this run's command line, to print with restart_file
+  /// Whether the output was due at this step by its cadence (not only as the run's last step): a
+  /// restart from this step keeps the step in the series only then.
+  bool output_due = false;
   /// Called by the frame (run_context::execute) once the run and its checks have passed: only
   /// then does the output, complete since "finalize", replace an earlier file of its name.
   void commit_outputs() {
     if (writer) writer->commit();
   }
 };
+
+/// The keys a restart may set otherwise than its checkpoint without allow_parameter_changes:
+/// the frame's (files, run limits, ...) and the SPH run-control and statistics keys. Every other
+/// key (kernel, EOS, gamma, the problem's layout, ...) changes the solution.
+inline std::set<std::string> restart_free_keys() {
+  auto keys = flecsi_lite::app::frame_free_keys();
+  for (const char* key : {"end_time", "max_steps", "progress_every", "diagnostics_every", "statistics_file",
+                          "statistics_every"})
+    keys.insert(key);
+  return keys;
+}
+
+/// The command line of this run as a shell would take it again (without any restart_file).
+inline std::string command_line(const flecsi_lite::app::run_context& run) {
+  const auto quoted = [](const std::string& word) {
+    if (word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=.,/:@%") ==
+        std::string::npos)
+      return word;
+    std::string text = "'";
+    for (const char c : word) text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return text + "'";
+  };
+  std::string line = run.program();
+  if (const auto file = run.options().get("parameters"); !file.empty()) line += " " + quoted(file);
+  for (const auto& assignment : run.options().all("set"))
+    if (assignment.compare(0, 13, "restart_file=") != 0) line += " --set " + quoted(assignment);
+  return line;
+}
 
 /// Reads the physics, run-control, statistics and file keys into `s`; the program's name from the
 /// frame. A statistics_file named like another file of the run is a parameter_error.
@@ -63,6 +101,10 @@ void configure(app_state<D>& s, const flecsi_lite::app::run_context& run) {
   s.files = flecsi_lite::app::file_parameters().read(p);
   s.parameters_text = p.resolved_text();
   s.statistics_keys = statistics_parameters().read(p);
+  const auto limits = flecsi_lite::app::run_limit_parameters().read(p);
+  s.stop = {limits.wall_time_limit, flecsi_lite::app::resolved_stop_file(limits, s.files.output_file, s.program)};
+  s.allowed_changes = flecsi_lite::app::restart_parameters().read(p).allow_parameter_changes;
+  s.resume_command = command_line(run);
   if (s.statistics_keys.file == "auto")
     s.statistics_keys.file = flecsi_lite::app::beside_output(s.files.output_file, s.program, ".statistics.txt");
   namespace app = flecsi_lite::app;
@@ -83,21 +125,41 @@ struct app_problem {
 };
 
 namespace detail {
+/// The output of this step when it is due by the cadence (output_every) or the run's last; only
+/// a due one moves the cadence on, so that a run stopped early and resumed keeps the cadence.
 template<int D>
 void write_output_step(app_state<D>& s) {
+  s.output_due = s.time >= s.next_output;
+  if (!s.output_due && !s.finished) return;
   write_particles(*s.writer, s);
-  s.next_output = s.files.output_every > 0 ? s.time + s.files.output_every : s.run.end_time;
+  if (s.output_due) s.next_output = s.files.output_every > 0 ? s.time + s.files.output_every : s.run.end_time;
 }
 
+/// A new run starts the series with its first step. A restart at step N continues the series of
+/// the run it continues: the writer starts from a copy of output_file (or the .partial an
+/// interrupted run left), drops its steps after N (and N itself when that was written only as an
+/// early stop's last step), and writes on; the copy replaces output_file when the run succeeds.
+/// Without such a file, a new series starts with the restart step.
 template<int D>
 void open_output(app_state<D>& s) {
   if (s.files.output_file.empty()) return;
-  s.writer = std::make_unique<flecsi_lite::io::h5part_writer>(s.files.output_file);
+  using writer = flecsi_lite::io::h5part_writer;
+  s.writer = std::make_unique<writer>(s.files.output_file, flecsi_lite::runtime::communicator(),
+                                      s.restarted ? writer::mode::append : writer::mode::create);
+  std::int64_t dropped = 0;
+  if (s.restarted) dropped = s.writer->drop_steps_from(s.output_due ? s.step + 1 : s.step);
   s.writer->describe_run({s.program, s.parameters_text, D});
   s.writer->set_attribute("gamma", s.physics.eos.ideal.gamma);
   s.writer->set_attribute("ranks", static_cast<std::int64_t>(flecsi_lite::runtime::size()));
   for (const auto& [name, value] : s.description) s.writer->set_attribute(name, value);
-  write_output_step(s);
+  if (!s.restarted) return write_output_step(s);
+  if (s.writer->steps_written() == 0) {
+    write_particles(*s.writer, s);  // the restart step opens a new series; the cadence stays the checkpoint's
+    return;
+  }
+  flecsi_lite::log::info() << s.program << ": continuing the output series of '" << s.files.output_file << "' after "
+                           << s.writer->steps_written() << " steps (to step " << s.writer->last_iteration() << ")"
+                           << (dropped ? ", " + std::to_string(dropped) + " later steps dropped" : std::string());
 }
 
 template<int D>
@@ -108,11 +170,30 @@ void read_initial_particles(app_state<D>& s) {
                            << describe_input_step(in, step);
 }
 
+/// A run state entry of the checkpoint `path`, which the app's checkpoints always hold.
+inline const flecsi_lite::io::attribute_value& state_entry(const flecsi_lite::io::run_state& state,
+                                                          const std::string& name, const std::string& path) {
+  const auto found = state.find(name);
+  if (found == state.end())
+    throw flecsi_lite::io::missing_attribute_error("checkpoint '" + path + "' lacks the run state '" + name +
+                                                   "' (root attribute 'state:" + name + "')");
+  return found->second;
+}
+
+/// The checkpoint's particles, clock and output cadence; its program and dimension must be this
+/// run's, its parameters too but for the free keys (restart_free_keys) and allow_parameter_changes.
 template<int D>
 void restart(app_state<D>& s) {
-  read_restart_checkpoint(s, s.files.restart_file, {{"program", s.program}});
+  namespace io = flecsi_lite::io;
+  const std::string& path = s.files.restart_file;
+  const auto state = read_restart_checkpoint(s, path, {{"program", s.program}});  // program, dimension first
+  const auto& written = state_entry(state, "parameters", path);
+  flecsi_lite::app::require_same_parameters(path, io::attribute_as<std::string>(written, "run state 'parameters'"),
+                                            s.parameters_text, restart_free_keys(), s.allowed_changes);
+  s.next_output = io::attribute_as<double>(state_entry(state, "next_output", path), "run state 'next_output'");
+  s.output_due = io::attribute_as<std::int64_t>(state_entry(state, "output_due", path), "run state 'output_due'");
   flecsi_lite::log::info() << s.program << ": restarting at step " << s.step << ", t = " << s.time << " from '"
-                           << s.files.restart_file << "'";
+                           << path << "'";
 }
 
 inline std::uint64_t rank_value(std::uint64_t value) { return value; }
@@ -181,13 +262,42 @@ void statistics_row(app_state<D>& s) {
   s.statistics.write(statistics_line<D>(s.step, s.time, dt, totals, mean_neighbours(s)));
 }
 
+/// After the clock: a run that max_steps stopped before end_time, or whose wall_time_limit or
+/// stop_file says so (one verdict for every rank), finishes at this step with a stop reason.
+template<int D>
+void check_run_limits(app_state<D>& s) {
+  if (s.finished) {
+    if (s.time < s.run.end_time && s.stop_reason.empty())
+      s.stop_reason = "max_steps = " + std::to_string(s.run.max_steps) + " reached";
+    return;
+  }
+  s.stop_reason = s.stop.check();
+  s.finished = !s.stop_reason.empty();
+}
+
+/// Every checkpoint_every steps, and when the run stops before end_time (then with the command
+/// that resumes it).
 template<int D>
 void checkpoint(app_state<D>& s) {
   const long every = s.files.checkpoint_every;
-  if (every <= 0 || s.finished || s.step % every != 0) return;
-  write_restart_checkpoint(s, s.files.checkpoint_file, {{"program", s.program}, {"parameters", s.parameters_text}});
-  flecsi_lite::log::info() << s.program << ": checkpoint of step " << s.step << " (t = " << s.time << ") in '"
-                           << s.files.checkpoint_file << "'";
+  const bool early = s.finished && !s.stop_reason.empty();
+  if (!early && (every <= 0 || s.finished || s.step % every != 0)) return;
+  const std::string& path = s.files.checkpoint_file;
+  auto line = flecsi_lite::log::info();
+  if (early) line << s.program << ": stopped at step " << s.step << ", t = " << s.time << " < end_time = "
+                  << s.run.end_time << ": " << s.stop_reason << "; ";
+  if (path.empty()) {
+    line << "no checkpoint (checkpoint_file = none): this run cannot be resumed";
+    return;
+  }
+  write_restart_checkpoint(s, path, {{"program", s.program}, {"parameters", s.parameters_text},
+                                     {"next_output", s.next_output}, {"output_due", std::int64_t{s.output_due}}});
+  line << "checkpoint of step " << s.step << " (t = " << s.time << ") in '" << path << "'";
+  if (!early) return;
+  line << "; resume with\n  " << s.resume_command << " --set restart_file=" << path;
+  // max_steps counts from step 0: the same value would stop the resumed run at once.
+  if (s.run.max_steps > 0 && s.step >= s.run.max_steps)
+    line << " --set max_steps=0\n(max_steps counts steps from t = 0: 0 runs to end_time, a larger value stops there)";
 }
 } // namespace detail
 
@@ -208,8 +318,9 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
   m.action("initialize", "open_output", [](State& s) { detail::open_output<D>(static_cast<base&>(s)); });
   m.action("initialize", "open_statistics", [](State& s) { detail::open_statistics<D>(s); }).after("diagnostics");
   m.action("analyze", "statistics", [](State& s) { detail::statistics_row<D>(s); }).after("conserved_quantities");
+  m.action("analyze", "run_limits", [](State& s) { detail::check_run_limits<D>(s); }).before("conserved_quantities");
   auto output = m.action("output", "h5part", [](State& s) {
-    if (s.writer && (s.finished || s.time >= s.next_output)) detail::write_output_step<D>(s);
+    if (s.writer) detail::write_output_step<D>(s);
   });
   auto checkpoint = m.action("output", "checkpoint", [](State& s) { detail::checkpoint<D>(s); });
   m.depends(checkpoint, output);

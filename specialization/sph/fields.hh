@@ -33,8 +33,8 @@ enum class particle_kind : std::int32_t { fluid = 0, wall = 1 };
 /// x y z, vx vy vz (zeros beyond D), m rho P u h id, kind (int32), cs, du_dt; checkpoints also
 /// what the next step reads besides (accelerations and du/dt of the last force evaluation, grad-h
 /// and pressure terms, the Balsara inputs, the walls' accumulators), so that a restart continues
-/// bitwise. Initial data: x [y z], m, h, u required; vx vy vz, rho, id, kind optional. The rest
-/// (half-step values, the distribution bookkeeping) is recomputed in every step.
+/// bitwise, and the distribution bookkeeping. Initial data: x [y z], m, h, u required; vx vy vz,
+/// rho, id, kind optional. The rest (half-step values) is recomputed in every step.
 template<int D>
 struct fields {
   template<class T>
@@ -77,9 +77,13 @@ struct fields {
   // In memory only: recomputed in every step.
   static inline const definition<vector<D>> velocity_half{"velocity_half"};  ///< v at the half step (leapfrog)
   static inline const definition<double> internal_energy_half{"u_half"};
-  /// Path length since the last distribution, and h then: when to distribute again.
-  static inline const definition<double> drift{"drift"};
-  static inline const definition<double> distributed_h{"distributed_h"};
+  // Restart only: the distribution bookkeeping (redistribution.hh). Path length since the last
+  // distribution, h and position then: when to distribute again, and the keys of that
+  // distribution, so that a restart sums over neighbours in the writing run's order (restart.hh).
+  static inline const definition<double> drift{"drift", persist::restart()};
+  static inline const definition<double> distributed_h{"distributed_h", persist::restart()};
+  static inline const definition<vector<D>> distributed_position{
+    "distributed_position", persist::as("distributed_x", "distributed_y", "distributed_z").restart()};
 };
 
 } // namespace flecsph::sph

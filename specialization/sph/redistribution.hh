@@ -44,11 +44,15 @@ inline distribution_slack measure_distribution_slack(ro<double> h, ro<double> dr
   return slack;
 }
 
-/// After a distribution: the path lengths start again from zero, from the current h.
-inline void mark_distributed(ro<double> h, wo<double> drift, wo<double> distributed_h) {
+/// After a distribution: the path lengths start again from zero, from the current h and position
+/// (the keys of this distribution follow from that position, for restarts).
+template<int D>
+void mark_distributed(ro<double> h, ro<vector<D>> x, wo<double> drift, wo<double> distributed_h,
+                      wo<vector<D>> distributed_x) {
   flecsi_lite::forall(h.size(), [&](std::size_t a) {
     drift(a) = 0;
     distributed_h(a) = h(a);
+    distributed_x(a) = x(a);
   }, "sph::mark_distributed");
 }
 

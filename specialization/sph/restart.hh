@@ -1,23 +1,33 @@
 // Checkpoint and restart of an SPH run: a checkpoint (flecsi_lite/io/checkpoint.hh: one H5Part
 // step, written under a temporary name and renamed) holds every field whose definition has role
-// output or restart (sph/fields.hh: the output's arrays plus what the next step reads besides)
-// and the run's clock and initial totals; a restart reads back every field with role restart.
-// A run restarted from it takes the same steps as the run that wrote it, bitwise:
+// output or restart (sph/fields.hh: the output's arrays plus what the next step reads besides,
+// and the distribution bookkeeping) and the run's clock and initial totals; a restart checks the
+// clock and the ids, then reads back every field with role restart.
+// A run restarted from it takes the same steps as the run that wrote it, bitwise, on any rank
+// count, and writing a checkpoint changes nothing in the writing run:
 //   - the next step starts from the same fields (no recomputation of the forces at a restart:
 //     they were computed with the predicted velocities of the step, not the stored ones);
-//   - the particles are distributed again at the step after every checkpoint, in the writing run
-//     as in the restarted one, so that both sum over neighbours in the same (key, id) order.
+//   - the restart distributes the particles from their positions and h at the writing run's last
+//     distribution (stored), so that the keys, hence the (key, id) order of every neighbour sum,
+//     are the writing run's; the path lengths since then decide the next distribution as they
+//     would have in the writing run.
 // The file is also a valid H5Part output (ParaView opens it) and valid initial data.
 #pragma once
 
+#include "specialization/sph/neighbourhood.hh"
 #include "specialization/sph/particle_input.hh"
 #include "specialization/sph/particle_output.hh"
+#include "specialization/sph/tasks.hh"
 
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <string>
+#include <utility>
 
 namespace flecsph::sph {
 
@@ -54,10 +64,75 @@ conserved_totals<D> load_totals(const flecsi_lite::io::run_state& state, const s
     t.angular_momentum[k] = get("initial_angular_momentum_" + std::to_string(k));
   return t;
 }
+/// Exchanges the current positions and h with those of the last distribution (twice: back).
+template<int D>
+void swap_distribution_state(rw<vector<D>> x, rw<double> h, rw<vector<D>> distributed_x, rw<double> distributed_h) {
+  flecsi_lite::forall(x.size(), [&](std::size_t a) {
+    std::swap(x(a), distributed_x(a));
+    std::swap(h(a), distributed_h(a));
+  }, "sph::swap_distribution_state");
+}
+
+/// Collective: distributes the particles as the writing run last did (keys and ghosts from the
+/// positions and h then), back to the current positions and h, and searches the neighbours.
+template<int D>
+void distribute_as_written(simulation<D>& s) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  const auto swap = [&] {
+    flecsi_lite::execute<swap_distribution_state<D>>(f::position()(p), f::smoothing_length()(p),
+                                                     f::distributed_position(p), f::distributed_h(p));
+  };
+  swap();
+  p.distribute();
+  swap();
+  ++s.distributions;
+  p.refresh_local_tree();
+  flecsi_lite::wait_all();
+  find_neighbours(p, s.neighbours);
+}
+
+/// The checkpoint's clock as a restart needs it: time, dt and step present and finite, dt > 0,
+/// step >= 0, time before end_time. Throws layout_error naming the file and the attribute.
+inline void check_clock(const flecsi_lite::io::h5part_reader& in, const flecsi_lite::io::step_info& info,
+                        double end_time) {
+  const auto names = in.step_attribute_names(0);
+  const auto has = [&](const char* name) { return std::find(names.begin(), names.end(), name) != names.end(); };
+  const std::string where = "checkpoint '" + in.path() + "' Step#0: ";
+  const auto fail = [&](const std::string& what) { throw flecsi_lite::io::layout_error(where + what); };
+  for (const char* name : {"dt", "step"})
+    if (!has(name)) fail("no attribute '" + std::string(name) + "'");
+  if (!has("time") && !has("TimeValue")) fail("no attribute 'time'");
+  const auto text = [](double v) {
+    std::ostringstream out;
+    out.precision(17);
+    out << v;
+    return out.str();
+  };
+  if (!std::isfinite(info.time)) fail("attribute 'time' = " + text(info.time) + " is not finite");
+  if (!std::isfinite(info.dt) || !(info.dt > 0)) fail("attribute 'dt' = " + text(info.dt) + " must be finite and > 0");
+  if (info.step < 0) fail("attribute 'step' = " + std::to_string(info.step) + " must be >= 0");
+  if (!(info.time < end_time))
+    fail("attribute 'time' = " + text(info.time) + " is not before end_time = " + text(end_time) +
+         ": the run it holds is complete (raise end_time to continue it)");
+}
+
+/// Ids integral and unique over all ranks. Throws layout_error naming the file and dataset 'id'.
+inline void check_ids(const flecsi_lite::io::h5part_reader& in) {
+  namespace io = flecsi_lite::io;
+  const std::string where = "checkpoint '" + in.path() + "' Step#0 dataset 'id'";
+  if (!in.has_dataset(0, "id")) throw io::layout_error(where + " is missing");
+  const auto type = in.dataset_type(0, "id");
+  if (type != io::element_type::uint64 && type != io::element_type::int64 && type != io::element_type::int32)
+    throw io::layout_error(where + " holds " + io::element_type_name(type) + " values: ids must be integers");
+  const auto ids = in.read<std::uint64_t>(0, "id", in.block(0));
+  if (const auto twice = io::duplicate_id(ids.data(), ids.size(), in.communicator()))
+    throw io::layout_error(where + ": id " + std::to_string(*twice) + " belongs to more than one particle");
+}
 } // namespace detail
 
 /// Collective: writes the checkpoint `path` of `s` now, with `state` (the app's entries) and the
-/// dimension and initial totals; the next step distributes the particles again.
+/// dimension and initial totals. The run goes on as it would without it.
 template<int D>
 void write_restart_checkpoint(simulation<D>& s, const std::string& path, flecsi_lite::io::run_state state) {
   state["dimension"] = std::int64_t{D};
@@ -66,13 +141,14 @@ void write_restart_checkpoint(simulation<D>& s, const std::string& path, flecsi_
     using flecsi_lite::data::role;
     flecsi_lite::data::write_fields(*s.particles, out, role::output | role::restart);
   });
-  s.redistribute_next = true;
 }
 
-/// Collective: restores `s` (particles, clock, initial totals) from the checkpoint `path` and
-/// marks it restarted, so that the driver does not recompute the state of the restart step.
-/// The checkpoint's run state must hold the dimension D and every entry of `required` (e.g. the
-/// program) with the same value. The tree settings (box, periodic axes) must be set. Returns the
+/// Collective: restores `s` (particles, clock, initial totals) from the checkpoint `path`,
+/// distributes them as the writing run had (detail::distribute_as_written) and marks it
+/// restarted, so that the driver does not recompute the state of the restart step. The
+/// checkpoint's clock must be usable (detail::check_clock, with s.run.end_time), its ids unique,
+/// and its run state must hold the dimension D and every entry of `required` (e.g. the program)
+/// with the same value. The tree settings (box, periodic axes) must be set. Returns the
 /// checkpoint's run state.
 template<int D>
 flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::string& path,
@@ -87,14 +163,16 @@ flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::
       throw flecsi_lite::io::layout_error("checkpoint '" + path + "' was written with " + name + " = " + written +
                                           ", this run has " + name + " = " + flecsi_lite::io::to_string(value));
   }
+  detail::check_clock(in, contents.info, s.run.end_time);
+  detail::check_ids(in);
   create_particles_for(s, in, 0);
   flecsi_lite::data::read_fields(*s.particles, in, 0, flecsi_lite::data::role::restart);
   s.time = contents.info.time;
   s.step = contents.info.step;
   s.dt = contents.info.dt;
   s.initial_totals = detail::load_totals<D>(contents.state, path);
+  detail::distribute_as_written(s);
   s.restarted = true;
-  s.redistribute_next = true;  // as the writing run does after its checkpoint
   return contents.state;
 }
 

@@ -49,7 +49,8 @@ flecsi_lite::control::control_model<State> make_control_model() {
   {
     auto search = on("initialize", "search", [](base& s) {
       if (!s.particles) throw std::logic_error("sph: the initial_data point must create the particles");
-      update_neighbours(s, true);
+      // A restart distributed and searched as the run it continues had (read_restart_checkpoint).
+      if (!s.restarted) update_neighbours(s, true);
     });
     auto density = on("initialize", "density", [](base& s) {
       if (!s.restarted) update_density(s);

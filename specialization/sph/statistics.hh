@@ -125,7 +125,7 @@ public:
       if (restart_step) {
         if (std::filesystem::is_regular_file(std::filesystem::symlink_status(path)))
           kept = rows_up_to(path, header, *restart_step);
-        kept += "# restarted at step " + std::to_string(*restart_step) + "\n";
+        kept += restart_mark + std::to_string(*restart_step) + "\n";
       }
       flecsi_lite::io::write_text_file(path, kept, "statistics_file");
       out_.open(path, std::ios::app);
@@ -151,7 +151,9 @@ private:
     const auto column_line = [](const std::string& text) {
       std::istringstream lines(text);
       std::string line, last;
-      while (std::getline(lines, line) && !line.empty() && line[0] == '#') last = line;
+      // The marks of earlier restarts are no header lines (a restart may find nothing but them).
+      while (std::getline(lines, line) && !line.empty() && line[0] == '#')
+        if (line.compare(0, restart_mark.size(), restart_mark) != 0) last = line;
       return last;
     };
     std::ifstream in(path);
@@ -179,6 +181,7 @@ private:
     return step;
   }
 
+  static inline const std::string restart_mark = "# restarted at step ";
   std::string path_;
   bool open_ = false;
   std::ofstream out_;  // rank 0 only

@@ -39,7 +39,8 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
   }
   if (redistribute) {
     p.distribute();
-    flecsi_lite::execute<mark_distributed>(f::smoothing_length()(p), f::drift(p), f::distributed_h(p));
+    flecsi_lite::execute<mark_distributed<D>>(f::smoothing_length()(p), f::position()(p), f::drift(p),
+                                              f::distributed_h(p), f::distributed_position(p));
     ++s.distributions;
   } else {
     p.refresh_local_tree();
@@ -126,7 +127,9 @@ void choose_time_step(simulation<D>& s, bool advance) {
     s.time = last ? s.run.end_time : s.time + s.dt;
     ++s.step;
     s.finished = last || (s.run.max_steps > 0 && s.step >= s.run.max_steps);
-    if (s.finished) return;  // dt stays the last step's, for the reports and the output
+    // dt stays the last step's, for the reports and the output; a run stopped by max_steps
+    // before end_time takes the next step's, which its checkpoint needs.
+    if (last) return;
   }
   double next = s.next_time_step.get();
   if (next >= std::numeric_limits<double>::max()) next = s.run.end_time - s.time;  // no fluid particle

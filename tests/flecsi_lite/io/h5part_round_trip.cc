@@ -10,6 +10,7 @@
 #include "flecsi_lite/io/h5part_writer.hh"
 
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <numeric>
@@ -203,6 +204,42 @@ TEST_CASE("append continues a complete file, which stays complete until close") 
   const auto x = in.read<double>(2, "x");
   CHECK(std::all_of(x.begin(), x.end(), [](double v) { return v == 7.0; }));
   CHECK(in.particle_count(2) == global_count(2));
+}
+
+TEST_CASE("a restart drops the steps after its iteration, or continues an interrupted partial file") {
+  const std::string path = file_name("continue");
+  remove_files({path, path + ".partial"});
+  write_series(path, 4);  // iterations 3, 13, 23, 33
+  {
+    h5part_writer out(path, comm(), h5part_writer::mode::append);
+    CHECK(out.last_iteration() == 33);
+    CHECK(out.drop_steps_from(14) == 2);  // a restart at iteration 13 keeps Step#0 and Step#1
+    CHECK(out.steps_written() == 2);
+    CHECK(out.last_iteration() == 13);
+    out.begin_step({9.0, 14, 0.5});
+    out.write("x", std::vector<double>(local_count(rank(), 2), 5.0));
+    out.end_step();
+    out.finish();  // not committed: the run was "killed"; the complete file keeps its 4 steps
+  }
+  {
+    h5part_reader untouched(path);
+    CHECK(untouched.steps().size() == 4);
+  }
+  if (rank() == 0) std::filesystem::remove(path);
+  barrier();
+  {
+    // Without the complete file, the partial one the interrupted run left is continued.
+    h5part_writer out(path, comm(), h5part_writer::mode::append);
+    CHECK(out.steps_written() == 3);
+    CHECK(out.last_iteration() == 14);
+    CHECK(out.drop_steps_from(100) == 0);
+    out.close();
+  }
+  h5part_reader in(path);
+  CHECK(in.steps() == std::vector<std::int64_t>{0, 1, 2});
+  CHECK(in.root_attribute_as<int>("NumSteps") == 3);
+  CHECK(in.step_information(2).step == 14);
+  check_part(in, 1, in.block(1));
 }
 
 TEST_CASE("a checkpoint holds one full-precision step and the run state") {
