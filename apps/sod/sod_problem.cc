@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace sod {
@@ -60,6 +61,21 @@ using sph::checked_positive;
 // The keys each derived quantity comes from, named in the errors of its checks.
 const std::string left_keys = "x_min, x_interface", right_keys = "x_interface, x_max";
 const std::string tube_keys = "particles, rho_left, rho_right, x_min, x_interface, x_max";
+
+/// A side's particle count (1D) or layers (2D/3D) from `value`: at least one, else the density
+/// contrast is more than `particles` can resolve (silently one particle there would mean a
+/// tube of millions of particles on the other side, which looked like a hang at step 0).
+std::int64_t resolved_count(const problem& problem, const std::string& what, double value) {
+  const std::int64_t count = checked_count("sod", what, value, tube_keys);
+  if (count >= 1) return count;
+  std::ostringstream message;
+  message.precision(6);
+  message << "sod: " << what << " = " << value << " (from " << tube_keys << "): particles = " << problem.particles
+          << " cannot resolve the density contrast rho_left / rho_right = " << problem.rho_left / problem.rho_right
+          << "; raise particles to at least " << std::ceil(double(problem.particles) / std::max(value, 1e-300))
+          << " or lower the contrast";
+  throw flecsi_lite::runtime::parameter_error(message.str());
+}
 
 /// Smoothing length of a particle of mass m at density rho.
 double initial_h(const sph::physics_settings& physics, int dimension, double m, double rho) {
@@ -122,10 +138,9 @@ tube_layout layout_of(const problem& problem, const sph::physics_settings& physi
                                                "rho_right, " + right_keys);
     const double total = checked_positive("sod", "mass of the tube", mass_left + mass_right, tube_keys);
     const double right = double(problem.particles) * mass_right / total;
-    layout.right =
-      std::max<std::int64_t>(1, checked_count("sod", "particles right of the interface", right, tube_keys));
+    layout.right = resolved_count(problem, "particles right of the interface", right);
     const double left = double(layout.right) * mass_left / mass_right;
-    layout.left = std::max<std::int64_t>(1, checked_count("sod", "particles left of the interface", left, tube_keys));
+    layout.left = resolved_count(problem, "particles left of the interface", left);
     layout.mass = total / double(layout.left + layout.right);
   } else {
     layout.body_centred = problem.lattice == lattice_type::body_centred;
@@ -160,10 +175,8 @@ tube_layout layout_of(const problem& problem, const sph::physics_settings& physi
   } else {
     checked_length("sod", "spacing along x on the left", layout.spacing_left, "tube_width, " + tube_keys);
     checked_length("sod", "spacing along x on the right", layout.spacing_right, "tube_width, " + tube_keys);
-    layout.left = std::max<std::int64_t>(
-      1, checked_count("sod", "layers left of the interface", length_left / layout.spacing_left, tube_keys));
-    layout.right = std::max<std::int64_t>(
-      1, checked_count("sod", "layers right of the interface", length_right / layout.spacing_right, tube_keys));
+    layout.left = resolved_count(problem, "layers left of the interface", length_left / layout.spacing_left);
+    layout.right = resolved_count(problem, "layers right of the interface", length_right / layout.spacing_right);
   }
   checked_length("sod", "spacing along x on the left", layout.spacing_left, tube_keys);
   checked_length("sod", "spacing along x on the right", layout.spacing_right, tube_keys);

@@ -113,7 +113,7 @@ std::string options::help(const std::string& program) const {
   }
   // Only the runtime hands argv to Kokkos (before parsing); serial tools never start Kokkos.
   if (Kokkos::is_initialized())
-    out << "\nKokkos options (--kokkos-num-threads=N, --kokkos-help, ...) are passed to Kokkos.\n";
+    out << "\nOptions --kokkos-* (--kokkos-num-threads=N, ...) are passed to Kokkos: --help-kokkos lists them.\n";
   return out.str();
 }
 

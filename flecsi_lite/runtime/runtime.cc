@@ -59,15 +59,34 @@ runtime::runtime(int& argc, char**& argv, options program_options)
   detail::set_communicator(framework_comm);
   // Thread binding stays off unless the user asks (Kokkos warns when the variable is unset).
   setenv("OMP_PROC_BIND", "false", 0);
-  Kokkos::initialize(argc, argv);  // removes the --kokkos-* arguments it recognizes
+  // Kokkos prints its ~40 lines of options for --help too: it sees --help only as --help-kokkos
+  // (passed as --kokkos-help), ours stays for our options. It removes the --kokkos-* arguments
+  // it recognizes and keeps the order of the others.
+  static char kokkos_help[] = "--kokkos-help", hidden_help[] = "--flecsi-lite-help";
+  bool kokkos_help_asked = false;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--help") == 0) argv[i] = hidden_help;
+    else if (std::strcmp(argv[i], "--help-kokkos") == 0 || std::strcmp(argv[i], "--kokkos-help") == 0) {
+      argv[i] = kokkos_help;
+      kokkos_help_asked = true;
+    }
+  }
+  Kokkos::initialize(argc, argv);
+  for (int i = 1; i < argc; ++i)
+    if (argv[i] == hidden_help) argv[i] = const_cast<char*>("--help");
 
   std::string program = argc > 0 ? argv[0] : "program";
   global_settings.program = program.substr(program.find_last_of('/') + 1);
   options_.flag("help", "print this help and exit")
+    .flag("help-kokkos", "print the options of Kokkos (--kokkos-num-threads=N, ...) and exit")
     .flag("control-model", "write the control model as a Graphviz file <program>-control-model.dot and exit")
     .flag("log-all-ranks", "every rank logs, each line prefixed by its rank (default: rank 0 only)")
     .value("trace", "FILE", "record every task launch, ghost copy and reduction of the executor to FILE")
     .flag("no-timers", "do not print the timer summary at exit");
+  if (kokkos_help_asked) {  // Kokkos printed its options
+    exit_code_ = 0;
+    return;
+  }
   try {
     options_.parse(argc, argv);
   } catch (const options_error& e) {

@@ -1,15 +1,17 @@
 // The neighbour lists the SPH tasks sum over (compressed sparse rows over the owned particles,
 // neighbours as storage indices, owned or ghost, in the canonical (key, id) order, each with
 // its periodic image shift); filled by the ntree search (seed Algorithm 2), so that the physics
-// does not depend on the tree.
+// does not depend on the tree; and the check that no two particles coincide.
 #pragma once
 
 #include "specialization/sph/fields.hh"
+#include "specialization/sph/tasks.hh"
 
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/topology/ntree.hh"
 #include "flecsi_lite/util.hh"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -77,6 +79,43 @@ void find_neighbours(particle_tree<D>& p, neighbourhood<D>& out) {
   for (std::size_t c = 0; c < table.size(); ++c)
     for (int k = 0; k < D; ++k) out.shift_table[c][k] = table[c][k];
   out.reach = p.settings().support;
+}
+
+/// Two distinct particles at the same position, the pair with the smallest ids (first < second);
+/// `found()` is false when there is none. SPH cannot have them: their h, and their pair forces
+/// along r_ab / |r_ab|, are undefined.
+struct coincident_pair {
+  std::uint64_t first = ~std::uint64_t(0), second = ~std::uint64_t(0);
+  double x[3] = {0, 0, 0};  ///< the position (first D components)
+  bool found() const { return first != ~std::uint64_t(0); }
+};
+
+/// Over ranks: the pair with the smallest (first, second), the same on every rank count.
+struct coincident_reduction {
+  static coincident_pair combine(const coincident_pair& a, const coincident_pair& b) {
+    return (b.first < a.first || (b.first == a.first && b.second < a.second)) ? b : a;
+  }
+};
+
+/// The task: a neighbour at distance 0 that is not the target itself (every such pair is in the
+/// lists of its owned members, so the reduction over ranks finds the same pair on any rank count).
+template<int D>
+coincident_pair find_coincident(const neighbourhood<D>& neighbours, ro_with_ghosts<vector<D>> x,
+                                ro_with_ghosts<std::uint64_t> id) {
+  const neighbour_walk<D> walk(neighbours);
+  coincident_pair best;
+  vector<D> r;
+  for (std::size_t a = 0; a < neighbours.size(); ++a)
+    for (std::size_t j = walk.begin(a); j < walk.end(a); ++j) {
+      const std::size_t b = walk.neighbour(j);
+      if (b == a || walk.separation(x(a), x(b), j, r) != 0) continue;
+      coincident_pair pair;
+      pair.first = std::min(id(a), id(b));
+      pair.second = std::max(id(a), id(b));
+      for (int k = 0; k < D; ++k) pair.x[k] = x(a)[k];
+      best = coincident_reduction::combine(best, pair);
+    }
+  return best;
 }
 
 } // namespace flecsph::sph

@@ -15,11 +15,74 @@
 #include "flecsi_lite/runtime.hh"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace flecsph::sph {
+
+namespace detail {
+/// The particle that limits the time step, for the message when it fails: the smallest of the
+/// two criteria (a non-finite one first), with the values behind them.
+struct time_step_report {
+  double score = std::numeric_limits<double>::infinity();
+  std::uint64_t id = 0;
+  double h = 0, sound_speed = 0, acceleration = 0, courant_dt = 0, acceleration_dt = 0, rho = 0, p = 0, u = 0;
+};
+struct time_step_report_reduction {
+  static time_step_report combine(const time_step_report& a, const time_step_report& b) {
+    return (b.score < a.score || (b.score == a.score && b.id < a.id)) ? b : a;
+  }
+};
+template<int D>
+time_step_report limiting_particle(physics_settings settings, ro<std::uint64_t> id, ro<particle_kind> kind,
+                                   ro<double> h, ro<double> c, ro<vector<D>> acceleration, ro<double> rho,
+                                   ro<double> p, ro<double> u) {
+  time_step_report worst;
+  for (std::size_t a = 0; a < h.size(); ++a) {
+    if (kind(a) != particle_kind::fluid) continue;
+    time_step_report r;
+    r.id = id(a), r.h = h(a), r.sound_speed = c(a), r.rho = rho(a), r.p = p(a), r.u = u(a);
+    double a2 = 0;
+    for (int k = 0; k < D; ++k) a2 += acceleration(a)[k] * acceleration(a)[k];
+    r.acceleration = std::sqrt(a2);
+    r.courant_dt = settings.courant * r.h / (2 * r.sound_speed);  // v_signal >= c_a + c_b
+    r.acceleration_dt = settings.acceleration_factor * std::sqrt(r.h / r.acceleration);
+    const double smallest = std::min(r.courant_dt, r.acceleration_dt);
+    r.score = std::isfinite(r.courant_dt) && std::isfinite(r.acceleration_dt) ? smallest
+                                                                              : -std::numeric_limits<double>::infinity();
+    worst = time_step_report_reduction::combine(worst, r);
+  }
+  return worst;
+}
+
+/// "sph: the time step is 0 at t = ... (step ...): particle id ... limits it: ..." naming the
+/// criteria, their keys and the particle's state.
+template<int D>
+std::string time_step_failure(simulation<D>& s, double next) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  const auto r = flecsi_lite::reduce<limiting_particle<D>, time_step_report_reduction>(
+                   s.physics, f::id()(p), f::kind(p), f::smoothing_length()(p), f::sound_speed(p), f::acceleration(p),
+                   f::density(p), f::pressure(p), f::internal_energy(p))
+                   .get();
+  std::ostringstream m;
+  m.precision(6);
+  m << "sph: the time step is " << next << " at t = " << s.time << " (step " << s.step << "), smallest for particle id "
+    << r.id << ": Courant criterion courant h / v_signal with courant = " << s.physics.courant << ", h = " << r.h
+    << ", sound speed " << r.sound_speed << " gives about " << r.courant_dt
+    << "; acceleration criterion acceleration_factor sqrt(h / |a|) with acceleration_factor = "
+    << s.physics.acceleration_factor << ", |a| = " << r.acceleration << " gives " << r.acceleration_dt
+    << ". Its state: rho = " << r.rho << ", P = " << r.p << ", u = " << r.u
+    << ". A step that small (it must be > 0 and move t) comes from that state, not from courant or "
+       "acceleration_factor: h collapsing (the particle has no neighbours: eta = "
+    << s.physics.eta << " too small for its spacing) or pressures, densities or energies out of range";
+  return m.str();
+}
+} // namespace detail
 
 /// Distributes the particles (sample sort, ghosts, local tree) when `redistribute` is set or when
 /// the particles' motion and growth of h since the last distribution could have brought particles
@@ -64,9 +127,17 @@ void update_density(simulation<D>& s) {
         f::density(p), f::omega(p))
         .get();
     if (worst <= 1.0) return;
-    if (attempt == 20)
-      throw std::runtime_error("sph: the smoothing length keeps outgrowing the neighbour search (" +
-                               std::to_string(worst) + " times the reach); raise search_margin");
+    if (attempt == 20) {
+      std::ostringstream m;
+      m.precision(6);
+      m << "sph: the smoothing length still outgrows the neighbour search after 20 searches at step " << s.step
+        << " (t = " << s.time << "): h reaches " << worst << " times the searched 2 (1 + search_margin) h, "
+        << "search_margin = " << s.physics.search_margin << " (reach " << s.neighbours.reach
+        << " h). Raise search_margin; if h grows without bound, a particle has no neighbours within 2 h (an "
+           "isolated particle, or eta = "
+        << s.physics.eta << " too small for the particle spacing)";
+      throw std::runtime_error(m.str());
+    }
     ++s.repeated_searches;
     update_neighbours(s);
   }
@@ -133,9 +204,9 @@ void choose_time_step(simulation<D>& s, bool advance) {
   }
   double next = s.next_time_step.get();
   if (next >= std::numeric_limits<double>::max()) next = s.run.end_time - s.time;  // no fluid particle
-  if (!(next > 0))
-    throw std::runtime_error("sph: time step " + std::to_string(next) + " at t = " + std::to_string(s.time) +
-                             " (step " + std::to_string(s.step) + ")");
+  // A step that does not move t (zero, non-finite, or below the resolution of t) would never end.
+  if (!(next > 0) || !(s.time + std::min(next, s.run.end_time - s.time) > s.time))
+    throw std::runtime_error(detail::time_step_failure(s, next));
   s.dt = std::min(next, s.run.end_time - s.time);
 }
 

@@ -7,6 +7,9 @@ Each file is a well-formed H5Part file (Step#0 with TimeValue) of 1-D particles 
   nan_position.h5part     x = NaN for particle 7
   missing_mass.h5part     no dataset m
   text_positions.h5part   x holds strings
+  coincident.h5part       particles 4 and 9 at one position
+  walls_only.h5part       every particle a wall (kind 1)
+  single_particle.h5part  one particle
 and two that are not usable HDF5 files:
   truncated.h5part        the first half of a valid file
   not_hdf5.h5part         a text file
@@ -46,6 +49,9 @@ write("negative_rho.h5part", broken(lambda p: p["rho"].__setitem__(5, -1.0)))
 write("nan_position.h5part", broken(lambda p: p["x"].__setitem__(7, np.nan)))
 write("missing_mass.h5part", broken(lambda p: p.pop("m")))
 write("text_positions.h5part", broken(lambda p: p.__setitem__("x", np.array([b"left"] * COUNT))))
+write("coincident.h5part", broken(lambda p: p["x"].__setitem__(9, p["x"][4])))
+write("walls_only.h5part", broken(lambda p: p.__setitem__("kind", np.ones(COUNT, dtype=np.int32))))
+write("single_particle.h5part", valid_particles(1))
 
 write("valid.h5part", valid_particles(4096))
 with open("valid.h5part", "rb") as source:
