@@ -47,10 +47,13 @@ void walk_dataset(hid_t dataset) {
 // The same calls as the reader (links by name, H5Oopen, attributes), one group level deep as
 // H5Part has, plus the datasets' own metadata.
 void walk(hid_t group, int depth) {
-  walk_attributes(group);
+  // Links first, attributes after, as the reader does: the order decides which of HDF5's error
+  // paths a corrupted header takes.
   std::vector<std::string> links;
   hsize_t position = 0;
-  if (H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, &position, collect_link, &links) < 0) return;
+  const bool listed = H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, &position, collect_link, &links) >= 0;
+  walk_attributes(group);
+  if (!listed) return;
   for (const auto& link : links) {
     auto object = object_handle(H5Oopen(group, link.c_str(), H5P_DEFAULT));
     if (!object) continue;
