@@ -3,10 +3,12 @@
 
 #include "flecsi_lite/io/collective_agreement.hh"
 #include "flecsi_lite/io/hdf5/h5part_layout.hh"
+#include "flecsi_lite/io/hdf5/h5part_precheck.hh"
 #include "flecsi_lite/io/hdf5/h5part_steps.hh"
 #include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
 #include "flecsi_lite/io/hdf5/hdf5_errors.hh"
 #include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
+#include "flecsi_lite/io/hdf5/hdf5_storage.hh"
 #include "flecsi_lite/util/edit_distance.hh"
 
 #include <algorithm>
@@ -42,6 +44,7 @@ void check_readable_hdf5(const std::string& path) {
   const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
   if (is_hdf5 == 0) throw file_error("'" + path + "' is not an HDF5 file (no HDF5 signature)");
   if (is_hdf5 < 0) throw file_error("cannot read '" + path + "'" + hdf5_reason());
+  if (const std::string crash = h5part::metadata_crash_check(path); !crash.empty()) throw file_error(crash);
 }
 
 std::string describe_steps(const std::vector<std::int64_t>& steps) {
@@ -145,6 +148,19 @@ hdf5_handle h5part_reader::open_dataset(std::int64_t step, const std::string& na
   throw missing_dataset_error(message + " (datasets: " + (list.empty() ? "none" : list) + ")");
 }
 
+// Before anything is allocated for it: a declared extent the file's bytes cannot hold is
+// corruption (a flipped bit in a dataspace declares 2^60 particles).
+void h5part_reader::check_storable(hid_t dataset, std::uint64_t extent, const std::string& what) const {
+  auto type = datatype_handle(H5Dget_type(dataset));
+  const std::uint64_t element_size = type ? H5Tget_size(type.get()) : 0;
+  if (element_size == 0) throw file_error("cannot inspect " + what + hdf5_reason());
+  const std::uint64_t file_size = file_size_of(dataset);
+  if (file_size > 0 && extent > storable_elements(dataset, element_size, file_size))
+    throw file_error(what + " declares " + std::to_string(extent) + " particles of " +
+                     std::to_string(element_size) + " bytes, more than the file's " +
+                     std::to_string(file_size) + " bytes can hold: the file is corrupted");
+}
+
 std::uint64_t h5part_reader::checked_length(std::int64_t step) const {
   if (auto known = step_lengths_.find(step); known != step_lengths_.end()) return known->second;
   auto group = open_step(step);
@@ -159,6 +175,7 @@ std::uint64_t h5part_reader::checked_length(std::int64_t step) const {
     if (rank != 1 || H5Sget_simple_extent_dims(space.get(), &extent, nullptr) != 1)
       throw layout_error(describe_dataset(step, name) + " has " + std::to_string(rank) +
                          " dimensions; H5Part datasets are 1-D");
+    check_storable(dataset.get(), extent, describe_dataset(step, name));
     if (length && *length != extent)
       throw layout_error(describe_step(step) + " has datasets of different lengths: '" + first +
                          "' has " + std::to_string(*length) + " particles, '" + name + "' has " +

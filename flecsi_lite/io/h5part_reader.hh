@@ -4,9 +4,10 @@
 // By default rank r of p reads the balanced block block_slice(N, r, p) of a step's N particles
 // (the seed's "read f in parallel"); an explicit slice reads any [offset, offset + count).
 // Every member function is collective over the reader's communicator: errors (missing file,
-// not HDF5, truncated, missing step or dataset, datasets of different lengths in one step,
-// wrong element type, slice out of range) throw the same io_error subclass with the same message
-// on every rank, naming the file, the step and the dataset. HDF5's own error printing is off.
+// not HDF5, truncated, missing step or dataset, datasets of different lengths in one step, a
+// declared length the file's bytes cannot hold, wrong element type, slice out of range) throw
+// the same io_error subclass with the same message on every rank, naming the file, the step and
+// the dataset. HDF5's own error printing is off.
 #pragma once
 
 #include "flecsi_lite/io/attribute_value.hh"
@@ -88,6 +89,7 @@ private:
   hdf5_handle open_step(std::int64_t step) const;  // throws missing_step_error
   hdf5_handle open_dataset(std::int64_t step, const std::string& name) const;
   std::uint64_t checked_length(std::int64_t step) const;  // no MPI: for use inside agree()
+  void check_storable(hid_t dataset, std::uint64_t extent, const std::string& what) const;
   std::string describe_step(std::int64_t step) const;
   std::string describe_dataset(std::int64_t step, const std::string& name) const;
   std::string describe_attribute(std::int64_t step, const std::string& name) const;

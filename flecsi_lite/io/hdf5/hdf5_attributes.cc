@@ -4,6 +4,7 @@
 #include "flecsi_lite/io/element_type.hh"
 #include "flecsi_lite/io/hdf5/hdf5_errors.hh"
 #include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+#include "flecsi_lite/io/hdf5/hdf5_storage.hh"
 
 #include <vector>
 
@@ -72,6 +73,10 @@ attribute_value read_attribute(hid_t location, const std::string& name, const st
         return result;
       }
       const std::size_t size = H5Tget_size(type.get());
+      // A corrupted datatype may declare gigabytes: no larger than the file before allocating.
+      if (const std::uint64_t file_size = file_size_of(attribute.get()); file_size > 0 && size > file_size)
+        throw file_error(what + " declares a string of " + std::to_string(size) + " bytes in a file of " +
+                         std::to_string(file_size) + " bytes: the file is corrupted");
       std::vector<char> buffer(size + 1, '\0');
       if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) fail("cannot read " + what);
       return std::string(buffer.data());  // stops at the terminator or the padding

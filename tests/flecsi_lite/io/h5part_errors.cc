@@ -157,6 +157,35 @@ TEST_CASE("datasets of different lengths in one step, and 2-D datasets, break th
              Contains("dataset 'x' of step 1 of '" + path + "' has 2 dimensions; H5Part datasets are 1-D"));
 }
 
+namespace {
+// Rank 0 writes a step whose datasets declare 2^40 particles (the dataspace a flipped bit or a
+// forged file gives) but hold none: storage is allocated only when written, so the file is tiny.
+void write_huge_declared_extent(const std::string& path) {
+  if (rank() == 0) {
+    const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t group = H5Gcreate2(file, "Step#0", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const hsize_t huge[1] = {hsize_t(1) << 40};
+    const hid_t space = H5Screate_simple(1, huge, nullptr);
+    for (const char* name : {"x", "m"})
+      H5Dclose(H5Dcreate2(group, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    H5Sclose(space), H5Gclose(group), H5Fclose(file);
+  }
+  barrier();
+}
+} // namespace
+
+TEST_CASE("a declared extent the file cannot hold is an error before anything is allocated") {
+  const std::string path = file_name("errors_huge_extent");
+  remove_files({path});
+  write_huge_declared_extent(path);
+  h5part_reader in(path);
+  const std::string message = error_message<file_error>([&] { in.particle_count(0); });
+  CHECK(same_on_every_rank(message));
+  CHECK_THAT(message, Contains("dataset 'm' of step 0 of '" + path + "' declares 1099511627776 particles of 8 bytes"));
+  CHECK_THAT(message, Contains("the file is corrupted"));
+  CHECK_THAT(error_message<file_error>([&] { in.read<double>(0, "x"); }), Contains("declares 1099511627776"));
+}
+
 TEST_CASE("misuse of the writer is an error on every rank and leaves the writer usable") {
   const std::string path = file_name("errors_writer");
   remove_files({path});

@@ -1,0 +1,273 @@
+#!/usr/bin/env python3
+# Bounded, seeded fuzz test of the apps' inputs (issue 13): mutations of the shipped parameter
+# files (byte flips, truncations, duplicated or removed lines, huge numbers, garbage values, odd
+# line ends) and of small H5Part files (byte flips and truncations of an initial-data file and of
+# a checkpoint, read as initial_data and restart_file), each run on 1 rank. Every case must exit
+# with 0, 2 or 3 (no signal, no hang), say why on stderr when it fails, and leave the earlier
+# output it would replace intact byte for byte.
+#
+#   fuzz_inputs.py --sod build/apps/sod/sod --sedov build/apps/sedov/sedov --source . \
+#                  --work fuzz_work [--seed 13] [--parameter-cases 200] [--h5part-cases 120]
+#                  [--launcher "mpiexec -n 1 --oversubscribe"] [--jobs 2]
+#
+# Deterministic: a case is a function of the seed and its number only, so a failure is replayed
+# with --only N. Plain python3 (no h5py): the H5Part files are made by the apps themselves.
+import argparse
+import concurrent.futures
+import os
+import random
+import resource
+import shlex
+import shutil
+import signal
+import subprocess
+import sys
+
+ALLOWED_STATUSES = (0, 2, 3)
+# Address space of one case: a valid but huge run (particles = 4294967296) fails its allocation
+# at once with exit 3 instead of filling the memory of a shared machine.
+ADDRESS_SPACE_LIMIT = 6 << 30
+
+HUGE_NUMBERS = ["1e308", "-1e308", "1e309", "1e-320", "9223372036854775807", "9223372036854775808",
+                "-9223372036854775808", "18446744073709551616", "4294967296", "2147483648",
+                "99999999999999999999999", "1e300", "-0", "0"]
+GARBAGE_VALUES = ["", "=", "= 1", "==", "nan", "-nan", "inf", "-inf", "1e", "0x10", "1,5", "1.2.3",
+                  "true", "yes", "\x00", "\xff\xfe", "\u00fc", "#", "\"", "'", "--", "1 2", "-",
+                  "none", "auto", "x" * 300, "1" * 400, "\t", "\\", "${HOME}", "../../..", "/"]
+LINE_ENDS = ["\r", "\r\n", "\n\r", "\r\r\n"]
+
+
+def parameter_files(source):
+    files = []
+    for app in ("sod", "sedov"):
+        folder = os.path.join(source, "apps", app)
+        files += [(app, os.path.join(folder, name)) for name in sorted(os.listdir(folder)) if name.endswith(".par")]
+    return files
+
+
+def mutate_lines(rng, data):
+    lines = data.split(b"\n")
+    kind = rng.choice(["duplicate", "remove", "huge", "garbage", "long_key", "swap"])
+    k = rng.randrange(len(lines))
+    if kind == "duplicate":
+        lines.insert(k, lines[k])
+    elif kind == "remove":
+        del lines[k]
+    elif kind == "swap":
+        j = rng.randrange(len(lines))
+        lines[k], lines[j] = lines[j], lines[k]
+    elif kind == "long_key":
+        lines.insert(k, b"k" * rng.choice([300, 5000, 200000]) + b" = 1")
+    else:
+        keyed = [i for i, line in enumerate(lines) if b"=" in line and not line.lstrip().startswith(b"#")]
+        i = rng.choice(keyed) if keyed else k
+        key = lines[i].split(b"=", 1)[0] if b"=" in lines[i] else b"particles "
+        value = rng.choice(HUGE_NUMBERS if kind == "huge" else GARBAGE_VALUES)
+        lines[i] = key + b"= " + value.encode("utf-8", "surrogateescape")
+    return b"\n".join(lines)
+
+
+def mutate_parameters(rng, data):
+    """One to three mutations of a parameter file's bytes."""
+    for _ in range(rng.choice([1, 1, 2, 3])):
+        kind = rng.choice(["flip", "byte", "truncate", "lines", "lines", "lines", "line_ends"])
+        if not data:
+            data = b"particles = 1\n"
+        if kind == "flip":
+            k = rng.randrange(len(data))
+            data = data[:k] + bytes([data[k] ^ (1 << rng.randrange(8))]) + data[k + 1:]
+        elif kind == "byte":
+            k = rng.randrange(len(data))
+            data = data[:k] + bytes([rng.randrange(256)]) + data[k + 1:]
+        elif kind == "truncate":
+            data = data[:rng.randrange(len(data))]
+        elif kind == "line_ends":
+            data = data.replace(b"\n", rng.choice(LINE_ENDS).encode())
+            if rng.random() < 0.5:
+                data = data.rstrip(b"\r\n")
+        else:
+            data = mutate_lines(rng, data)
+    return data
+
+
+def mutate_h5part(rng, data):
+    """Byte flips, mostly in the first 4 KiB (superblock, root group, B-trees, object headers),
+    some anywhere; sometimes a truncation."""
+    data = bytearray(data)
+    if rng.random() < 0.12:
+        return bytes(data[:rng.randrange(len(data))])
+    for _ in range(rng.choice([1, 1, 2, 4, 8])):
+        head = min(len(data), 4096)
+        k = rng.randrange(head) if rng.random() < 0.7 else rng.randrange(len(data))
+        data[k] = data[k] ^ (1 << rng.randrange(8)) if rng.random() < 0.7 else rng.randrange(256)
+    return bytes(data)
+
+
+def limit_address_space():
+    os.setsid()
+    resource.setrlimit(resource.RLIMIT_AS, (ADDRESS_SPACE_LIMIT, ADDRESS_SPACE_LIMIT))
+
+
+class runner:
+    def __init__(self, options):
+        self.options = options
+        self.launcher = shlex.split(options.launcher)
+        self.environment = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false")
+        self.quiet = ["--set", "progress_every=0", "--set", "diagnostics_every=0", "--no-timers"]
+
+    def run(self, arguments, folder):
+        """(status or 'timeout', stderr text) of one app run in `folder`."""
+        process = subprocess.Popen(self.launcher + arguments, cwd=folder, stdout=subprocess.DEVNULL,
+                                   stderr=subprocess.PIPE, env=self.environment,
+                                   preexec_fn=None if self.options.no_limit else limit_address_space,
+                                   start_new_session=self.options.no_limit)
+        try:
+            _, error = process.communicate(timeout=self.options.timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)  # the case's own process group only
+            process.communicate()
+            return "timeout", ""
+        return process.returncode, error.decode("utf-8", "replace")
+
+
+def earlier_output(folder, reference):
+    path = os.path.join(folder, "earlier.h5part")
+    shutil.copyfile(reference, path)
+    return path
+
+
+def same_bytes(a, b):
+    with open(a, "rb") as x, open(b, "rb") as y:
+        return x.read() == y.read()
+
+
+def judge(case, status, error, output, reference):
+    """The failures of one finished case, as text lines."""
+    problems = []
+    if status == "timeout":
+        return ["no exit within the time limit (a hang)"]
+    if status < 0 or status > 128:
+        problems.append("ended by signal %d" % (-status if status < 0 else status - 128))
+    elif status not in ALLOWED_STATUSES:
+        problems.append("exit status %d (allowed: 0, 2, 3)" % status)
+    if status != 0:
+        if not error.strip():
+            problems.append("non-zero exit without a message on stderr")
+        if not os.path.isfile(output) or not same_bytes(output, reference):
+            problems.append("the earlier output earlier.h5part was changed or removed")
+    return problems
+
+
+def prepare_inputs(options, work, run):
+    """The reference output (any earlier run's), a tiny initial-data file and a checkpoint."""
+    tiny = ["--set", "particles=40", "--set", "max_steps=2"]
+    sod_1d = os.path.join(options.source, "apps", "sod", "sod_1d.par")
+    steps = [
+        [options.sod, sod_1d] + tiny + ["--set", "output_file=reference.h5part"] + run.quiet,
+        [options.sod, sod_1d] + tiny + ["--set", "output_file=initial.h5part"] + run.quiet,
+        [options.sod, sod_1d] + tiny + ["--set", "output_file=none", "--set", "checkpoint_file=checkpoint.h5part",
+                                        "--set", "checkpoint_every=1"] + run.quiet,
+    ]
+    for arguments in steps:
+        status, error = run.run(arguments, work)
+        if status != 0:
+            sys.exit("fuzz_inputs: preparing the inputs failed (%s): %s\n%s" % (status, " ".join(arguments), error))
+    return {name: os.path.join(work, name + ".h5part") for name in ("reference", "initial", "checkpoint")}
+
+
+def parameter_case(options, files, n):
+    rng = random.Random("%d parameters %d" % (options.seed, n))
+    app, path = rng.choice(files)
+    with open(path, "rb") as source:
+        data = mutate_parameters(rng, source.read())
+    return app, os.path.basename(path), data
+
+
+def h5part_case(options, inputs, n):
+    rng = random.Random("%d h5part %d" % (options.seed, n))
+    which = rng.choice(["initial", "checkpoint"])
+    with open(inputs[which], "rb") as source:
+        return which, mutate_h5part(rng, source.read())
+
+
+def run_case(options, run, inputs, files, kind, n):
+    folder = os.path.join(options.work, "%s_%04d" % (kind, n))
+    os.makedirs(folder, exist_ok=True)
+    output = earlier_output(folder, inputs["reference"])
+    sod_1d = os.path.join(options.source, "apps", "sod", "sod_1d.par")
+    bounded = ["--set", "max_steps=1", "--set", "output_file=earlier.h5part"] + run.quiet
+    if kind == "parameters":
+        app, name, data = parameter_case(options, files, n)
+        with open(os.path.join(folder, "case.par"), "wb") as case_file:
+            case_file.write(data)
+        arguments = [options.sod if app == "sod" else options.sedov, "case.par"] + bounded
+        what = "%s %s mutated" % (app, name)
+    else:
+        which, data = h5part_case(options, inputs, n)
+        with open(os.path.join(folder, "case.h5part"), "wb") as case_file:
+            case_file.write(data)
+        key = "initial_data" if which == "initial" else "restart_file"
+        arguments = [options.sod, sod_1d, "--set", "particles=40", "--set", key + "=case.h5part"] + bounded
+        what = "%s read as %s" % (which, key)
+    status, error = run.run(arguments, folder)
+    problems = judge(n, status, error, output, inputs["reference"])
+    if not problems:
+        shutil.rmtree(folder)
+    return kind, n, what, status, error, problems, folder
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--sod", required=True)
+    parser.add_argument("--sedov", required=True)
+    parser.add_argument("--source", required=True, help="source tree (its apps/*/*.par are mutated)")
+    parser.add_argument("--work", required=True, help="scratch folder (emptied)")
+    parser.add_argument("--seed", type=int, default=13)
+    parser.add_argument("--parameter-cases", type=int, default=200)
+    parser.add_argument("--h5part-cases", type=int, default=120)
+    parser.add_argument("--timeout", type=float, default=30, help="seconds per case before it is a hang")
+    parser.add_argument("--launcher", default="", help="command before the app, e.g. 'mpiexec -n 1'")
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--only", help="run only this case: parameters:N or h5part:N")
+    parser.add_argument("--no-limit", action="store_true", help="no address-space limit (sanitizer builds)")
+    parser.add_argument("--allow-failures", action="store_true", help="report but exit 0 (for measurements)")
+    options = parser.parse_args()
+    options.sod, options.sedov = os.path.abspath(options.sod), os.path.abspath(options.sedov)
+    options.source, options.work = os.path.abspath(options.source), os.path.abspath(options.work)
+    shutil.rmtree(options.work, ignore_errors=True)
+    os.makedirs(options.work)
+
+    run = runner(options)
+    inputs = prepare_inputs(options, options.work, run)
+    files = parameter_files(options.source)
+    cases = [("parameters", n) for n in range(options.parameter_cases)] + \
+            [("h5part", n) for n in range(options.h5part_cases)]
+    if options.only:
+        kind, number = options.only.split(":")
+        cases = [(kind, int(number))]
+    statuses, failures = {}, []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=options.jobs) as pool:
+        jobs = [pool.submit(run_case, options, run, inputs, files, kind, n) for kind, n in cases]
+        for job in jobs:
+            kind, n, what, status, error, problems, folder = job.result()
+            statuses.setdefault(kind, {}).setdefault(status, 0)
+            statuses[kind][status] += 1
+            if problems:
+                failures.append((kind, n, what, status, error, problems, folder))
+    for kind, counts in sorted(statuses.items()):
+        print("fuzz_inputs: %s cases by exit status: %s" %
+              (kind, ", ".join("%s: %d" % (s, c) for s, c in sorted(counts.items(), key=lambda x: str(x[0])))))
+    for kind, n, what, status, error, problems, folder in failures:
+        print("FAIL %s:%d (%s, exit %s; replay with --only %s:%d; files in %s): %s" %
+              (kind, n, what, status, kind, n, folder, "; ".join(problems)))
+        tail = error.strip().splitlines()[-6:]
+        for line in tail:
+            print("    " + line[:300])
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
+    print("fuzz_inputs: %d cases, %d failed (seed %d); %.0f CPU seconds in the cases" %
+          (len(cases), len(failures), options.seed, used.ru_utime + used.ru_stime))
+    return 1 if failures and not options.allow_failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
