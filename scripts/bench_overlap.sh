@@ -6,10 +6,11 @@
 set -euo pipefail
 build=${1:-build}; steps=${2:-20}
 here=$(cd "$(dirname "$0")" && pwd); root=$(dirname "$here")
+source "$here/mpirun-flags.sh"
 out=$(mktemp -d); declare -A seconds
 for ranks in 1 2; do
   start=$(date +%s.%N)
-  mpirun --oversubscribe -np $ranks "$build/apps/sedov/sedov" "$root/apps/sedov/sedov_3d.par" \
+  mpirun "${FLECSPH_MPIRUN_FLAGS[@]}" -np $ranks "$build/apps/sedov/sedov" "$root/apps/sedov/sedov_3d.par" \
     --set particles_per_side=50 --set max_steps=$steps --set output_file="$out/sedov_$ranks.h5part" \
     --set progress_every=0 --set diagnostics_every=0 --trace "$out/trace_$ranks.json" > "$out/log_$ranks" 2>&1
   end=$(date +%s.%N)
