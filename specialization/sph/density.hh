@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace flecsph::sph {
 
@@ -42,17 +44,20 @@ void density_sums(const neighbour_walk<D>& walk, std::size_t a, double h, const 
 }
 } // namespace detail
 
-/// Density (and, with adaptive h, the smoothing length and Omega) of every owned particle.
-/// Wall particles keep their h. Returns the largest h_a / h_limit_a over the owned particles,
-/// where h_limit_a = reach/2 * (h_a at entry) is the largest h for which a's list is complete:
-/// above 1, h grew out of the searched reach (h is then the grown value, rho is not final) and
-/// the caller must search again and call this task again.
-template<int D>
-double compute_density(const neighbourhood<D>& neighbours, physics_settings settings,
-                       ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> m, ro<particle_kind> kind,
+/// Density (and, with adaptive h, the smoothing length and Omega) of the owned targets of one
+/// part (neighbourhood::targets): launched once with Ghost = na for the interior targets, which
+/// needs no ghost value, and once with Ghost = ro for the boundary ones. Of a neighbour b the sums
+/// read x_b and m_b only; h, kind and the outputs are the target's own. Wall particles keep their
+/// h. Returns the largest of `earlier` (the value of the other part's launch) and h_a / h_limit_a
+/// over this part's targets, where h_limit_a = reach/2 * (h_a at entry) is the largest h for
+/// which a's list is complete: above 1, h grew out of the searched reach (h is then the grown
+/// value, rho is not final) and the caller must search again and call this task again.
+template<int D, flecsi_lite::privilege Ghost>
+double compute_density(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+                       ro_neighbours<vector<D>, Ghost> x, ro_neighbours<double, Ghost> m, ro<particle_kind> kind,
                        rw<double> h, wo<double> rho, wo<double> omega) {
   const neighbour_walk<D> walk(neighbours);
-  const std::size_t n = neighbours.size();
+  const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
   const vector<D>* xs = x.data();
   const double* ms = m.data();
   const double half_reach = 0.5 * neighbours.reach;
@@ -60,8 +65,9 @@ double compute_density(const neighbourhood<D>& neighbours, physics_settings sett
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
     using Kernel = decltype(kernel);
     flecsi_lite::forall_reduce(
-      n,
-      [&](std::size_t a, double& local_worst) {
+      targets.size(),
+      [&](std::size_t i, double& local_worst) {
+        const std::size_t a = targets[i];
         const double h_start = h(a), h_limit = half_reach * h_start;
         const bool adapt = settings.adaptive_smoothing_length && kind(a) == particle_kind::fluid;
         double h_a = h_start, rho_a = 0, drho_dh = 0;
@@ -80,7 +86,7 @@ double compute_density(const neighbourhood<D>& neighbours, physics_settings sett
       },
       Kokkos::Max<double>(worst), "sph::compute_density", target_schedule);
   });
-  return std::max(worst, 0.0);  // no owned particle: the reduction's identity is -inf
+  return std::max({worst, earlier, 0.0});  // no target: the reduction's identity is -inf
 }
 
 } // namespace flecsph::sph

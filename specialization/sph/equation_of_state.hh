@@ -11,17 +11,20 @@
 namespace flecsph::sph {
 
 /// div v_a = -1/(Omega_a rho_a) sum_b m_b v_ab . grad_a W_ab(h_a) and |curl v_a| (the cross
-/// product form; zero in 1D) of every owned particle.
-template<int D>
+/// product form; zero in 1D) of the owned targets of one part (neighbourhood::targets): the
+/// interior ones with Ghost = na, the boundary ones with Ghost = ro.
+template<int D, flecsi_lite::privilege Ghost>
 void compute_velocity_gradients(const neighbourhood<D>& neighbours, physics_settings settings,
-                                ro_with_ghosts<vector<D>> x, ro_with_ghosts<vector<D>> v,
-                                ro_with_ghosts<double> m, ro<double> h, ro<double> rho,
+                                ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
+                                ro_neighbours<double, Ghost> m, ro<double> h, ro<double> rho,
                                 ro<double> omega, wo<double> divergence,
                                 wo<double> curl) {
   const neighbour_walk<D> walk(neighbours);
+  const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
     using Kernel = decltype(kernel);
-    flecsi_lite::forall(neighbours.size(), [&](std::size_t a) {
+    flecsi_lite::forall(targets.size(), [&](std::size_t i) {
+      const std::size_t a = targets[i];
       const double h_a = h(a);
       const double reach2 = physics::kernel_support * physics::kernel_support * h_a * h_a;
       double div = 0;

@@ -12,8 +12,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 namespace flecsph::sph {
 
@@ -71,8 +73,10 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
 }
 } // namespace detail
 
-/// Accelerations and du/dt of every owned particle; returns the smallest time step over the owned
-/// fluid particles (the largest double when there is none):
+/// Accelerations and du/dt of the owned targets of one part (neighbourhood::targets): launched
+/// with Ghost = na for the interior targets, which needs no ghost value, and with Ghost = ro for
+/// the boundary ones. Returns the smallest of `earlier` (the other part's value) and the time
+/// steps of this part's fluid particles (the largest double when there is none):
 /// min(courant h_a / max_b v_sig,ab, acceleration_factor sqrt(h_a / |a_a|)).
 ///
 /// For a pair (a, b) with r_ab = x_a - x_b, F_x = (1/r) dW/dr(r, h_x), F_ab = (F_a + F_b)/2 and the
@@ -83,22 +87,25 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
 /// The bracket of dv/dt is computed by the same symmetric expression for (a, b) and (b, a), so the
 /// pair forces are exactly opposite: momentum is conserved to round-off, energy to the accuracy of
 /// the time integration.
-template<int D>
-double compute_forces(const neighbourhood<D>& neighbours, physics_settings settings,
-                      ro_with_ghosts<vector<D>> x, ro_with_ghosts<vector<D>> v, ro_with_ghosts<double> m,
-                      ro_with_ghosts<double> h, ro_with_ghosts<double> rho, ro_with_ghosts<double> P,
-                      ro_with_ghosts<double> cs, ro_with_ghosts<double> pressure_term,
-                      ro_with_ghosts<double> u, ro_with_ghosts<double> balsara, ro<particle_kind> kind,
+template<int D, flecsi_lite::privilege Ghost>
+double compute_forces(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+                      ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
+                      ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> h,
+                      ro_neighbours<double, Ghost> rho, ro_neighbours<double, Ghost> P,
+                      ro_neighbours<double, Ghost> cs, ro_neighbours<double, Ghost> pressure_term,
+                      ro_neighbours<double, Ghost> u, ro_neighbours<double, Ghost> balsara, ro<particle_kind> kind,
                       wo<vector<D>> acceleration, wo<double> du_dt) {
   const neighbour_walk<D> walk(neighbours);
   const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
                                    P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
+  const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
   double smallest = std::numeric_limits<double>::max();
   const auto loop = [&](auto kernel_type, auto with_conductivity) {
     using Kernel = decltype(kernel_type);
     flecsi_lite::forall_reduce(
-      neighbours.size(),
-      [&](std::size_t a, double& local_smallest) {
+      targets.size(),
+      [&](std::size_t i, double& local_smallest) {
+        const std::size_t a = targets[i];
         vector<D> dv_dt;
         double du, signal;
         detail::force_sums<Kernel, decltype(with_conductivity)::value, D>(walk, a, in, settings.viscosity,
@@ -119,7 +126,7 @@ double compute_forces(const neighbourhood<D>& neighbours, physics_settings setti
     if (settings.conductivity > 0) loop(kernel_type, std::true_type{});
     else loop(kernel_type, std::false_type{});
   });
-  return smallest;
+  return std::min(smallest, earlier);
 }
 
 } // namespace flecsph::sph

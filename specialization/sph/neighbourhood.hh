@@ -1,7 +1,9 @@
 // The neighbour lists the SPH tasks sum over (compressed sparse rows over the owned particles,
 // neighbours as storage indices, owned or ghost, in the canonical (key, id) order, each with
 // its periodic image shift); filled by the ntree search (seed Algorithm 2), so that the physics
-// does not depend on the tree; and the check that no two particles coincide.
+// does not depend on the tree. The targets are split into INTERIOR (every neighbour owned) and
+// BOUNDARY (some neighbour a ghost), so that the interior sums can run while the ghosts travel;
+// and the check that no two particles coincide.
 #pragma once
 
 #include "specialization/sph/fields.hh"
@@ -15,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace flecsph::sph {
 
@@ -30,8 +33,17 @@ struct neighbourhood {
   tree::neighbour_lists lists;  ///< offsets per owned particle, packed entries (b, shift code)
   std::array<vector<D>, tree::shift_code_count<D>> shift_table{};  ///< displacement per shift code
   double reach = 2.0;  ///< search radius in units of h (>= the kernel support 2)
+  /// The owned targets whose lists hold owned particles only (a periodic image of an owned
+  /// particle is owned data), and the others, whose lists hold a ghost; each ascending, together
+  /// every target once. Filled with the lists (split_targets).
+  std::vector<std::uint32_t> interior, boundary;
 
   std::size_t size() const { return lists.size(); }
+  /// The targets of a pair task's launch, chosen by its ghost privilege: without ghost access
+  /// (na) the interior ones, with it the boundary ones.
+  const std::vector<std::uint32_t>& targets(flecsi_lite::privilege ghost) const {
+    return ghost == flecsi_lite::na ? interior : boundary;
+  }
   /// Mean number of neighbours per target (itself included).
   double mean_count() const { return size() ? double(lists.total()) / double(size()) : 0.0; }
 };
@@ -70,6 +82,24 @@ struct neighbour_walk {
 /// unchanged by the schedule.
 inline constexpr flecsi_lite::dynamic_schedule target_schedule{256};
 
+/// Splits the targets of `n` into interior and boundary: a target is interior when every entry
+/// of its list is an owned particle (storage index below the number of targets, the owned count).
+template<int D>
+void split_targets(neighbourhood<D>& n) {
+  const std::size_t owned = n.size();
+  std::vector<std::uint8_t> needs_ghosts(owned);
+  const neighbour_walk<D> walk(n);
+  flecsi_lite::forall(owned, [&](std::size_t a) {
+    bool ghost = false;
+    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end && !ghost; ++j) ghost = walk.neighbour(j) >= owned;
+    needs_ghosts[a] = ghost;
+  }, "sph::split_targets");
+  n.interior.clear();
+  n.boundary.clear();
+  for (std::size_t a = 0; a < owned; ++a)
+    (needs_ghosts[a] ? n.boundary : n.interior).push_back(static_cast<std::uint32_t>(a));
+}
+
 /// Fills `out` from the tree's search over owned targets (symmetric criterion, reach =
 /// the tree's support). Call after ntree::distribute(), or refresh_local_tree().
 template<int D>
@@ -79,6 +109,7 @@ void find_neighbours(particle_tree<D>& p, neighbourhood<D>& out) {
   for (std::size_t c = 0; c < table.size(); ++c)
     for (int k = 0; k < D; ++k) out.shift_table[c][k] = table[c][k];
   out.reach = p.settings().support;
+  split_targets(out);
 }
 
 /// Two distinct particles at the same position, the pair with the smallest ids (first < second);

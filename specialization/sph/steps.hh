@@ -21,6 +21,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace flecsph::sph {
 
@@ -116,16 +117,25 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
 /// Density and smoothing length; when some h outgrew the searched reach, searches again with the
 /// grown h and repeats (the same decision on every rank, so results stay rank-count independent).
 /// The search again redistributes only when the ghosts no longer suffice for the grown h.
+/// Each pair task is launched twice with the same fields: over the interior targets with owned
+/// privileges only (it need not wait for the ghost copies, so it runs while they travel), then over
+/// the boundary targets with ghosts, combining the interior part's value into its reduction.
+/// Every particle's sums are the same as in one launch, so the results are too, bit for bit.
 template<int D>
 void update_density(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
   for (int attempt = 0;; ++attempt) {
-    const double worst =
-      flecsi_lite::reduce<compute_density<D>, flecsi_lite::reduction::max>(
-        s.neighbours, s.physics, f::position()(p), f::mass()(p), f::kind(p), f::smoothing_length()(p),
-        f::density(p), f::omega(p))
-        .get();
+    const double worst = std::apply(
+      [&](auto... field) {
+        auto interior = flecsi_lite::execute<compute_density<D, flecsi_lite::na>>(s.neighbours, s.physics, 0.0,
+                                                                                  field...);
+        return flecsi_lite::reduce<compute_density<D, flecsi_lite::ro>, flecsi_lite::reduction::max>(
+          s.neighbours, s.physics, interior, field...);
+      },
+      std::make_tuple(f::position()(p), f::mass()(p), f::kind(p), f::smoothing_length()(p), f::density(p),
+                      f::omega(p)))
+      .get();
     if (worst <= 1.0) return;
     if (attempt == 20) {
       std::ostringstream m;
@@ -149,9 +159,13 @@ void update_pressure(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
   if (s.physics.balsara)
-    flecsi_lite::execute<compute_velocity_gradients<D>>(
-      s.neighbours, s.physics, f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
-      f::density(p), f::omega(p), f::velocity_divergence(p), f::velocity_curl(p));
+    std::apply(
+      [&](auto... field) {
+        flecsi_lite::execute<compute_velocity_gradients<D, flecsi_lite::na>>(s.neighbours, s.physics, field...);
+        flecsi_lite::execute<compute_velocity_gradients<D, flecsi_lite::ro>>(s.neighbours, s.physics, field...);
+      },
+      std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
+                      f::omega(p), f::velocity_divergence(p), f::velocity_curl(p)));
   flecsi_lite::execute<compute_equation_of_state<D>>(s.physics, f::density(p), f::internal_energy(p),
                                                      f::smoothing_length()(p), f::omega(p),
                                                      f::velocity_divergence(p), f::velocity_curl(p), f::pressure(p),
@@ -163,10 +177,16 @@ template<int D>
 void update_forces(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
-  s.next_time_step = flecsi_lite::reduce<compute_forces<D>, flecsi_lite::reduction::min>(
-    s.neighbours, s.physics, f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
-    f::density(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p), f::internal_energy(p), f::balsara(p),
-    f::kind(p), f::acceleration(p), f::internal_energy_rate(p));
+  s.next_time_step = std::apply(
+    [&](auto... field) {
+      auto interior = flecsi_lite::execute<compute_forces<D, flecsi_lite::na>>(
+        s.neighbours, s.physics, std::numeric_limits<double>::max(), field...);
+      return flecsi_lite::reduce<compute_forces<D, flecsi_lite::ro>, flecsi_lite::reduction::min>(
+        s.neighbours, s.physics, interior, field...);
+    },
+    std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
+                    f::pressure(p), f::sound_speed(p), f::pressure_term(p), f::internal_energy(p), f::balsara(p),
+                    f::kind(p), f::acceleration(p), f::internal_energy_rate(p)));
 }
 
 template<int D>

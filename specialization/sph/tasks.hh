@@ -32,5 +32,10 @@ using rw = accessor<T, flecsi_lite::rw>;
 /// The executor copies the ghosts first when the owned values changed since the last copy.
 template<class T>
 using ro_with_ghosts = accessor<T, flecsi_lite::ro, flecsi_lite::ro>;
+/// Reads the values of a pair task's neighbours: owned only (Ghost = na), for the launch over
+/// the interior targets that runs while the ghosts travel, or owned and ghosts (Ghost = ro), for
+/// the launch over the boundary targets (neighbourhood::targets).
+template<class T, flecsi_lite::privilege Ghost>
+using ro_neighbours = accessor<T, flecsi_lite::ro, Ghost>;
 
 } // namespace flecsph::sph
