@@ -75,10 +75,13 @@ int main(int argc, char** argv) {
   definition.summary = "The Sedov-Taylor blast wave with SPH: H5Part output and the shock radius against the "
                        "similarity solution.";
   definition.declare_parameters = [](runtime::parameter_schema& schema) { sedov::problem_parameters().declare(schema); };
+  // Without a parameter file: the problem of apps/sedov/sedov_3d.par (validation.defaults.sedov).
+  definition.physics_defaults.conductivity = 0;
   definition.run_defaults.end_time = 0.05;
   definition.run_defaults.progress_every = 10;
   definition.run_defaults.diagnostics_every = 10;
   definition.file_defaults.output_file = "sedov.h5part";
+  definition.file_defaults.output_every = 0.01;
   definition.file_defaults.checkpoint_file = "sedov.checkpoint.h5part";
   definition.declare_options = [](runtime::options& options) {
     options.value("check", "DR,DE", "exit with status 1 unless |shock radius error| <= DR and |energy change|/E <= DE");

@@ -45,7 +45,8 @@ void set_periodic_box(sph::simulation<D>& s, const problem& problem) {
   s.tree_settings.periodic.fill(true);
 }
 
-/// Fills this rank's block of the lattice (positions, ids, masses, h, u). The blast energy is
+/// Fills this rank's block of the lattice (positions, ids, masses, h, u): masses and h whose SPH
+/// density is rho0 (sph::density_consistent_particle). The blast energy is
 /// E w_i / sum_j m_j w_j per unit mass with w_i = W(|x_i|, h) of the particle's h, so that exactly E
 /// (up to rounding) is deposited, spread by the kernel. Collective.
 template<int D>
@@ -56,8 +57,13 @@ void create_lattice(sph::simulation<D>& s, const problem& problem) {
   set_periodic_box(s, problem);
   sph::create_particles(s, block.count);
   const double spacing = problem.side / double(problem.per_side);
-  const double mass = problem.rho0 * std::pow(spacing, D);
-  const double smoothing = s.physics.eta * spacing;
+  // The mass and h whose SPH density sum on the cubic lattice is rho0 (not 0.2-0.4% more).
+  const auto particle = sph::density_consistent_particle<D>(s.physics, problem.rho0, std::pow(spacing, D),
+                                                            [&](double h) {
+    return sph::lattice_kernel_sum<D>(s.physics.kernel, h, spacing, spacing, 0.0);
+  });
+  const double mass = particle.mass;
+  const double smoothing = particle.h;
   const double u_background = s.physics.eos.ideal.internal_energy(problem.rho0, problem.background_pressure);
   // The kernel weights of every lattice site near the centre, summed in a fixed order (the same on
   // any number of ranks): the normalization of the deposit.

@@ -99,10 +99,13 @@ int main(int argc, char** argv) {
   definition.program = "sod";
   definition.summary = "The Sod shock tube with SPH: H5Part output and L1 errors against the exact solution.";
   definition.declare_parameters = [](runtime::parameter_schema& schema) { sod::problem_parameters().declare(schema); };
+  // Without a parameter file: the standard problem of apps/sod/sod_1d.par (validation.defaults.sod).
+  definition.physics_defaults.eos.ideal.gamma = 1.4;
   definition.run_defaults.end_time = 0.2;
-  definition.run_defaults.progress_every = 100;
-  definition.run_defaults.diagnostics_every = 1;
+  definition.run_defaults.progress_every = 200;
+  definition.run_defaults.diagnostics_every = 200;
   definition.file_defaults.output_file = "sod.h5part";
+  definition.file_defaults.output_every = 0.05;
   definition.file_defaults.checkpoint_file = "sod.checkpoint.h5part";
   definition.declare_options = [](runtime::options& options) {
     options.value("check-l1", "RHO,P,V", "exit with status 1 if an L1 error exceeds its bound")

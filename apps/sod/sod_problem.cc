@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 namespace sod {
 
@@ -185,10 +186,27 @@ tube_layout layout_of(const problem& problem, const sph::physics_settings& physi
   layout.walls_right = wall_layers(problem, physics, initial_h(physics, dimension, layout.mass, problem.rho_right),
                                    layout.spacing_right);
   check_layout(problem, physics, layout);
+  const auto consistent = [&](double rho, double along, double across) {
+    const double volume = layout.mass / rho, shift = layout.body_centred ? 0.5 : 0.0;
+    const auto sum = [&](auto dimension_tag) {
+      constexpr int D = decltype(dimension_tag)::value;
+      return sph::density_consistent_particle<D>(physics, rho, volume, [&](double h) {
+        return sph::lattice_kernel_sum<D>(physics.kernel, h, along, across, shift);
+      });
+    };
+    return dimension == 1 ? sum(std::integral_constant<int, 1>{})
+                          : dimension == 2 ? sum(std::integral_constant<int, 2>{}) : sum(std::integral_constant<int, 3>{});
+  };
+  const auto left = consistent(problem.rho_left, layout.spacing_left, layout.across_spacing_left);
+  const auto right = consistent(problem.rho_right, layout.spacing_right, layout.across_spacing_right);
+  layout.mass_left = checked_positive("sod", "particle mass on the left", left.mass, "eta, kernel, " + tube_keys);
+  layout.mass_right = checked_positive("sod", "particle mass on the right", right.mass, "eta, kernel, " + tube_keys);
+  layout.h_left = checked_length("sod", "smoothing length on the left", left.h, "eta, kernel, " + tube_keys);
+  layout.h_right = checked_length("sod", "smoothing length on the right", right.h, "eta, kernel, " + tube_keys);
   return layout;
 }
 
-tube_particle particle_of(const problem& problem, const sph::physics_settings& physics, const tube_layout& layout,
+tube_particle particle_of(const problem& problem, const sph::physics_settings& /*physics*/, const tube_layout& layout,
                           std::int64_t index) {
   tube_particle particle{};
   const std::int64_t left_count = (layout.walls_left + layout.left) * layout.layer_left();
@@ -209,7 +227,8 @@ tube_particle particle_of(const problem& problem, const sph::physics_settings& p
     particle.x[k] = (double(rest % across) + offset) * across_spacing - 0.5 * layout.width;
   particle.rho = left ? problem.rho_left : problem.rho_right;
   particle.P = left ? problem.p_left : problem.p_right;
-  particle.h = initial_h(physics, layout.dimension, layout.mass, particle.rho);
+  particle.h = left ? layout.h_left : layout.h_right;
+  particle.m = left ? layout.mass_left : layout.mass_right;
   particle.kind = from_interface < (left ? layout.left : layout.right) ? sph::particle_kind::fluid
                                                                         : sph::particle_kind::wall;
   return particle;

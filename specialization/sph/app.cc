@@ -8,9 +8,9 @@ flecsi_lite::app::definition frame_definition(const app_definition& app) {
   frame.program = app.program;
   frame.summary = app.summary;
   frame.declare_parameters = [declare_problem = app.declare_parameters,
-                              run_defaults = app.run_defaults](flecsi_lite::runtime::parameter_schema& schema) {
+                              physics_defaults = app.physics_defaults, run_defaults = app.run_defaults](flecsi_lite::runtime::parameter_schema& schema) {
     if (declare_problem) declare_problem(schema);
-    physics_parameters().declare(schema);
+    physics_parameters(physics_defaults).declare(schema);
     run_parameters(run_defaults).declare(schema);
     statistics_parameters().declare(schema);
   };

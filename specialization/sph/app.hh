@@ -334,11 +334,12 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
 }
 
 /// An SPH app for the framework's frame (flecsi_lite/app.hh): its name and help, its problem's
-/// keys, the defaults it chooses for the run-control and file keys, its options and the run.
+/// keys, the defaults it chooses for the physics, run-control and file keys, its options and the run.
 struct app_definition {
   std::string program;
   std::string summary;  ///< first line of --help
   std::function<void(flecsi_lite::runtime::parameter_schema&)> declare_parameters;  ///< the problem's keys
+  physics_settings physics_defaults;  ///< gamma, kernel, dissipation, ... of the problem
   run_settings run_defaults;  ///< end_time, progress_every, diagnostics_every of the problem
   io_settings file_defaults;  ///< output_file and checkpoint_file of the problem
   std::function<void(flecsi_lite::runtime::options&)> declare_options;  ///< the app's checks

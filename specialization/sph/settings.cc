@@ -15,8 +15,8 @@ using physics::equation_of_state;
 using physics::viscosity_parameters;
 using physics_block = parameter_block<physics_settings>;
 
-physics_block declare_physics() {
-  physics_block p;
+physics_block declare_physics(const physics_settings& defaults) {
+  physics_block p(defaults);
   p.choice("kernel", &physics_settings::kernel, physics::kernel_names(), "smoothing kernel");
   p.choice("eos", member(&physics_settings::eos, &equation_of_state::type), physics::eos_names(), "equation of state");
   p.real("gamma", member(&physics_settings::eos, &equation_of_state::ideal, &physics::ideal_gas::gamma),
@@ -69,9 +69,8 @@ physics_block declare_physics() {
 }
 } // namespace
 
-const parameter_block<physics_settings>& physics_parameters() {
-  static const physics_block block = declare_physics();
-  return block;
+parameter_block<physics_settings> physics_parameters(const physics_settings& defaults) {
+  return declare_physics(defaults);
 }
 
 parameter_block<run_settings> run_parameters(const run_settings& defaults) {

@@ -39,8 +39,8 @@ struct physics_settings {
 };
 
 /// The physics keys (kernel, eos, gamma, ..., distribution_skin), each bound to its member, with
-/// the defaults of physics_settings.
-const flecsi_lite::runtime::parameter_block<physics_settings>& physics_parameters();
+/// the defaults each problem chooses in `defaults` (by default those of physics_settings).
+flecsi_lite::runtime::parameter_block<physics_settings> physics_parameters(const physics_settings& defaults = {});
 
 /// How long to run and how often to report.
 struct run_settings {
