@@ -8,4 +8,5 @@
 #include "flecsi_lite/runtime/parameter_block.hh"
 #include "flecsi_lite/runtime/parameters.hh"
 #include "flecsi_lite/runtime/runtime.hh"
+#include "flecsi_lite/runtime/thread_share.hh"
 #include "flecsi_lite/runtime/timers.hh"

@@ -4,6 +4,7 @@
 
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/runtime/log.hh"
+#include "flecsi_lite/runtime/thread_share.hh"
 #include "flecsi_lite/runtime/timers.hh"
 
 #include <Kokkos_Core.hpp>
@@ -71,9 +72,11 @@ runtime::runtime(int& argc, char**& argv, options program_options)
       kokkos_help_asked = true;
     }
   }
+  // Each rank's share of its node's cores unless the user chose; both spellings of the option.
+  const std::string thread_error = detail::prepare_kokkos_threads(argc, argv);
   Kokkos::initialize(argc, argv);
   for (int i = 1; i < argc; ++i)
-    if (argv[i] == hidden_help) argv[i] = const_cast<char*>("--help");
+    if (std::strcmp(argv[i], hidden_help) == 0) argv[i] = const_cast<char*>("--help");  // argv was copied
 
   std::string program = argc > 0 ? argv[0] : "program";
   global_settings.program = program.substr(program.find_last_of('/') + 1);
@@ -83,6 +86,11 @@ runtime::runtime(int& argc, char**& argv, options program_options)
     .flag("log-all-ranks", "every rank logs, each line prefixed by its rank (default: rank 0 only)")
     .value("trace", "FILE", "record every task launch, ghost copy and reduction of the executor to FILE")
     .flag("no-timers", "do not print the timer summary at exit");
+  if (!thread_error.empty()) {
+    if (rank() == 0) std::cerr << global_settings.program << ": " << thread_error << "\n";
+    exit_code_ = 2;
+    return;
+  }
   if (kokkos_help_asked) {  // Kokkos printed its options
     exit_code_ = 0;
     return;
@@ -100,6 +108,7 @@ runtime::runtime(int& argc, char**& argv, options program_options)
     return;
   }
   log::set_all_ranks(options_.has("log-all-ranks"));
+  detail::warn_if_oversubscribed(communicator());
   if (options_.has("control-model"))
     global_settings.control_model_file = global_settings.program + "-control-model.dot";
   global_settings.trace_file = options_.get("trace");
