@@ -254,12 +254,7 @@ void executor::complete(launch& l) {
   l.state = launch_state::done;
   l.end_time = now();
   note(l);
-  l.dependencies.clear();  // do not keep the history alive
-  l.ordered_after.clear();
-  l.started.clear();
-  l.requests.clear();
-  l.start = nullptr;
-  l.finish = nullptr;
+  release(l);
 }
 
 void executor::fail(launch& l, std::exception_ptr error, const std::string& origin) {
@@ -268,11 +263,31 @@ void executor::fail(launch& l, std::exception_ptr error, const std::string& orig
   l.failure_origin = origin;
   l.end_time = now();
   note(l);
-  l.dependencies.clear();
+  release(l);
+}
+
+void executor::release(launch& l) {
+  l.dependencies.clear();  // do not keep the history alive
   l.ordered_after.clear();
   l.started.clear();
+  l.requests.clear();
   l.start = nullptr;
   l.finish = nullptr;
+}
+
+bool executor::complete_arrived_communication() {
+  bool completed = false;
+  for (auto& l : queue_) {
+    // Tasks run to completion in begin(); only communication waits for requests.
+    if (l->state != launch_state::in_flight || !l->communicates()) continue;
+    int flag = 0;
+    MPI_Testall(static_cast<int>(l->requests.size()), l->requests.data(), &flag, MPI_STATUSES_IGNORE);
+    if (flag) {
+      complete(*l);
+      completed = true;
+    }
+  }
+  return completed;
 }
 
 bool executor::progress() {
@@ -295,15 +310,7 @@ bool executor::progress() {
       if (communication_waiting) break;
     }
   }
-  for (auto& l : queue_) {
-    if (l->state != launch_state::in_flight) continue;
-    int flag = 0;
-    MPI_Testall(static_cast<int>(l->requests.size()), l->requests.data(), &flag, MPI_STATUSES_IGNORE);
-    if (flag) {
-      complete(*l);
-      progressed = true;
-    }
-  }
+  progressed |= complete_arrived_communication();
   const auto before = queue_.size();
   queue_.erase(std::remove_if(queue_.begin(), queue_.end(), [](const launch_ptr& l) { return l->finished(); }),
                queue_.end());
@@ -313,23 +320,13 @@ bool executor::progress() {
 bool executor::poll() {
   if (polling_) return false;
   polling_ = true;
-  bool in_flight = false;
-  for (auto& l : queue_) {
-    if (l->state != launch_state::in_flight || !l->communicates()) continue;
-    int flag = 0;
-    MPI_Testall(static_cast<int>(l->requests.size()), l->requests.data(), &flag, MPI_STATUSES_IGNORE);
-    if (flag) complete(*l);
-    else in_flight = true;
-  }
+  complete_arrived_communication();
   // Safe while a task runs: a ready copy depends on nothing unfinished, and the running task
   // neither writes its owned values (it would wait for the copy) nor reads its ghosts.
   for (auto& l : queue_)
-    if (l->communicates() && ready(*l)) {
-      begin(l);
-      in_flight |= l->state == launch_state::in_flight;
-    }
+    if (l->communicates() && ready(*l)) begin(l);
   polling_ = false;
-  return in_flight;
+  return communication_in_flight();
 }
 
 bool executor::communication_in_flight() const {

@@ -111,6 +111,9 @@ private:
   void complete(launch& l);
   void fail(launch& l, std::exception_ptr error, const std::string& origin);
   void note(const launch& l);  // trace and timers
+  void release(launch& l);     // drops what a finished launch no longer needs
+  /// Completes the communication launches whose requests are done; true if any did.
+  bool complete_arrived_communication();
   [[noreturn]] void abort_run() const;
   /// One scheduling round; false when nothing could progress without blocking.
   bool progress();
