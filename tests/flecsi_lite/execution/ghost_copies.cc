@@ -6,26 +6,21 @@
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/narray.hh"
+#include "index_values.hh"
 
 #include <cmath>
 
 using namespace flecsi_lite;
 using topology::narray;
+using testing::fill_scaled_index;
+using testing::ghosts_hold;
 
 namespace {
 const field<double>::definition<narray> u{"u"};
 const field<double>::definition<narray> next{"next"};
 
-void initialize(const narray& n, field<double>::accessor<wo> f, double scale) {
-  for (std::size_t i = 0; i < f.size(); ++i) f(i) = scale * static_cast<double>(n.global_index(i));
-}
 void write_ghosts(field<double>::accessor<na, wo> f) {
   for (std::size_t i = f.owned_size(); i < f.size(); ++i) f(i) = -1;
-}
-bool ghosts_hold(const narray& n, field<double>::accessor<ro, ro> f, double scale) {
-  for (std::size_t i = f.owned_size(); i < f.size(); ++i)
-    if (f(i) != scale * static_cast<double>(n.global_index(i))) return false;
-  return true;
 }
 double owned_sum(field<double>::accessor<ro> f) {
   double s = 0;
@@ -53,7 +48,7 @@ bool all_ranks(bool mine) {
 TEST_CASE("ghost copies happen when and only when ghost values are stale") {
   narray n(40, 2, true);
   const auto start = copies();
-  execute<initialize>(n, u(n), 1.0);
+  execute<fill_scaled_index>(n, u(n), 1.0);
   CHECK(copies() == start);                        // writing owned values copies nothing
   execute<owned_sum>(u(n));
   CHECK(copies() == start);                        // reading owned values copies nothing
@@ -62,7 +57,7 @@ TEST_CASE("ghost copies happen when and only when ghost values are stale") {
   execute<ghosts_hold>(n, u(n), 1.0);
   execute<ghosts_hold>(n, u(n), 1.0);
   CHECK(copies() == start + 1);                    // still valid: no copy
-  execute<initialize>(n, u(n), 3.0);               // owned values change: ghosts stale
+  execute<fill_scaled_index>(n, u(n), 3.0);               // owned values change: ghosts stale
   CHECK(all_ranks(execute<ghosts_hold>(n, u(n), 3.0).get()));
   CHECK(copies() == start + 2);
   execute<write_ghosts>(u(n));                     // a task defines the ghost values itself
@@ -74,7 +69,7 @@ TEST_CASE("ghost copies happen when and only when ghost values are stale") {
 TEST_CASE("ghost values come from the owning ranks, periodic and not") {
   for (bool periodic : {true, false}) {
     narray n(30, 3, periodic);
-    execute<initialize>(n, u(n), 0.5);
+    execute<fill_scaled_index>(n, u(n), 0.5);
     CHECK(all_ranks(execute<ghosts_hold>(n, u(n), 0.5).get()));
     const std::size_t expected_ghosts =
       (periodic || runtime::rank() > 0 ? 3 : 0) + (periodic || runtime::rank() + 1 < runtime::size() ? 3 : 0);
@@ -85,7 +80,7 @@ TEST_CASE("ghost values come from the owning ranks, periodic and not") {
 TEST_CASE("diffusion on any rank count equals the serial computation bitwise") {
   const std::size_t global = 97;  // not divisible by the rank counts
   narray n(global, 1, true);
-  execute<initialize>(n, u(n), 1.0);
+  execute<fill_scaled_index>(n, u(n), 1.0);
   for (int step = 0; step < 50; ++step) {
     execute<smooth>(n, u(n), next(n));
     execute<copy_back>(next(n), u(n));

@@ -7,22 +7,17 @@
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/narray.hh"
+#include "index_values.hh"
 
 using namespace flecsi_lite;
 using topology::narray;
+using testing::fill_scaled_index;
+using testing::ghosts_hold;
 
 namespace {
 const field<double>::definition<narray> big{"big"};
 const field<double>::definition<narray> other{"other"};
 
-void set(const narray& n, field<double>::accessor<wo> f, double v) {
-  forall(f.size(), [&](std::size_t i) { f(i) = v * static_cast<double>(n.global_index(i)); });
-}
-bool ghosts_hold(const narray& n, field<double>::accessor<ro, ro> f, double v) {
-  for (std::size_t i = f.owned_size(); i < f.size(); ++i)
-    if (f(i) != v * static_cast<double>(n.global_index(i))) return false;
-  return true;
-}
 /// Long and independent of `big`: loops until no communication is in flight (bounded by a count
 /// of rounds, so that without polling it ends, and the test fails, rather than hang).
 int long_task(field<double>::accessor<rw> f) {
@@ -45,13 +40,13 @@ TEST_CASE("a ghost copy is posted when its data is ready and advances while a lo
   auto& ex = execution::executor::instance();
   // 200000 ghosts per side: 1.6 MB messages, beyond any eager protocol.
   narray n(800000 * runtime::size(), 200000, true);
-  execute<set>(n, big(n), 1.0);
-  execute<set>(n, other(n), 2.0);
+  execute<fill_scaled_index>(n, big(n), 1.0);
+  execute<fill_scaled_index>(n, other(n), 2.0);
   execute<ghosts_hold>(n, big(n), 1.0).get();  // the ghosts of big are read: later writes copy eagerly
   wait_all();
   ex.clear_trace();
   ex.enable_tracing(true);
-  execute<set>(n, big(n), 3.0);                  // the last writer of big: its copy is ready after it
+  execute<fill_scaled_index>(n, big(n), 3.0);                  // the last writer of big: its copy is ready after it
   auto rounds = execute<long_task>(other(n));  // independent of big
   rounds.get();                                // runs before any reader of big's ghosts is recorded
   const bool delivered = execute<ghosts_hold>(n, big(n), 3.0).get();
