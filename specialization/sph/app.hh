@@ -170,16 +170,6 @@ void read_initial_particles(app_state<D>& s) {
                            << describe_input_step(in, step);
 }
 
-/// A run state entry of the checkpoint `path`, which the app's checkpoints always hold.
-inline const flecsi_lite::io::attribute_value& state_entry(const flecsi_lite::io::run_state& state,
-                                                          const std::string& name, const std::string& path) {
-  const auto found = state.find(name);
-  if (found == state.end())
-    throw flecsi_lite::io::missing_attribute_error("checkpoint '" + path + "' lacks the run state '" + name +
-                                                   "' (root attribute 'state:" + name + "')");
-  return found->second;
-}
-
 /// The checkpoint's particles, clock and output cadence; its program and dimension must be this
 /// run's, its parameters too but for the free keys (restart_free_keys) and allow_parameter_changes.
 template<int D>
@@ -187,11 +177,11 @@ void restart(app_state<D>& s) {
   namespace io = flecsi_lite::io;
   const std::string& path = s.files.restart_file;
   const auto state = read_restart_checkpoint(s, path, {{"program", s.program}});  // program, dimension first
-  const auto& written = state_entry(state, "parameters", path);
+  const auto& written = checkpoint_entry(state, "parameters", path);
   flecsi_lite::app::require_same_parameters(path, io::attribute_as<std::string>(written, "run state 'parameters'"),
                                             s.parameters_text, restart_free_keys(), s.allowed_changes);
-  s.next_output = io::attribute_as<double>(state_entry(state, "next_output", path), "run state 'next_output'");
-  s.output_due = io::attribute_as<std::int64_t>(state_entry(state, "output_due", path), "run state 'output_due'");
+  s.next_output = io::attribute_as<double>(checkpoint_entry(state, "next_output", path), "run state 'next_output'");
+  s.output_due = io::attribute_as<std::int64_t>(checkpoint_entry(state, "output_due", path), "run state 'output_due'");
   flecsi_lite::log::info() << s.program << ": restarting at step " << s.step << ", t = " << s.time << " from '"
                            << path << "'";
 }

@@ -31,6 +31,17 @@
 
 namespace flecsph::sph {
 
+/// The run-state entry `name` of the checkpoint `path` (its root attribute "state:<name>"); a
+/// missing one is an error naming both.
+inline const flecsi_lite::io::attribute_value& checkpoint_entry(const flecsi_lite::io::run_state& state,
+                                                                const std::string& name, const std::string& path) {
+  const auto found = state.find(name);
+  if (found == state.end())
+    throw flecsi_lite::io::missing_attribute_error("checkpoint '" + path + "' lacks the run state '" + name +
+                                                   "' (root attribute 'state:" + name + "')");
+  return found->second;
+}
+
 namespace detail {
 /// The initial totals as run-state entries "initial_<quantity>", and back.
 template<int D>
@@ -48,10 +59,8 @@ void store_totals(const conserved_totals<D>& t, flecsi_lite::io::run_state& stat
 template<int D>
 conserved_totals<D> load_totals(const flecsi_lite::io::run_state& state, const std::string& path) {
   const auto get = [&](const std::string& name) {
-    const auto found = state.find(name);
-    if (found == state.end())
-      throw flecsi_lite::io::missing_attribute_error("checkpoint '" + path + "' lacks the run state '" + name + "'");
-    return flecsi_lite::io::attribute_as<double>(found->second, "run state '" + name + "' of '" + path + "'");
+    return flecsi_lite::io::attribute_as<double>(checkpoint_entry(state, name, path),
+                                                 "run state '" + name + "' of '" + path + "'");
   };
   conserved_totals<D> t;
   t.mass = get("initial_mass");
