@@ -3,6 +3,7 @@
 
 #include "flecsi_lite/app/file_settings.hh"
 #include "flecsi_lite/app/run_limits.hh"
+#include "flecsi_lite/runtime/detail/parameter_text.hh"
 #include "flecsi_lite/runtime/parameters.hh"
 
 #include <sstream>
@@ -10,12 +11,6 @@
 namespace flecsi_lite::app {
 
 namespace {
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
-
 std::set<std::string> keys_of(const runtime::parameter_schema& schema) {
   std::set<std::string> keys;
   for (const auto& d : schema.declarations()) keys.insert(d.name());
@@ -39,17 +34,14 @@ std::set<std::string> frame_free_keys() {
 }
 
 std::map<std::string, std::string> parameter_values(const std::string& text) {
+  // The parameter files' own reading of a line: its line ends, '#' outside quotes, trimming.
+  using namespace runtime::detail;
   std::map<std::string, std::string> values;
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);) {
-    line = trimmed(line);
+  for (const std::string& raw : split_lines(text)) {
+    const std::string line = trim(strip_comment(raw));
     const auto equals = line.find('=');
-    if (line.empty() || line[0] == '#' || equals == std::string::npos) continue;
-    std::string value = trimmed(line.substr(equals + 1));
-    // A quoted string ends at its closing quote (it may hold '#'); anything else at a comment.
-    const auto end = value.size() > 0 && value[0] == '"' ? value.find('"', 1) : value.find('#');
-    if (end != std::string::npos) value = trimmed(value.substr(0, value[0] == '"' ? end + 1 : end));
-    values[trimmed(line.substr(0, equals))] = value;
+    if (equals == std::string::npos) continue;
+    values[trim(line.substr(0, equals))] = trim(line.substr(equals + 1));
   }
   return values;
 }
