@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -21,17 +22,20 @@ namespace analytic = flecsph::analytic;
 
 const std::set<std::string> sod_options = {"rho-left", "v-left",  "p-left", "rho-right",
                                            "v-right",  "p-right", "x0",     "xmin",
-                                           "xmax"};
-const std::set<std::string> sedov_options = {"dim", "energy", "rho0", "rmax"};
+                                           "xmax",     "x-file"};
+const std::set<std::string> sedov_options = {"dim", "energy", "rho0", "rmax", "shock"};
 
 options command_line() {
   options parser(
     "Writes an exact solution as CSV (header line, then one row per point) to stdout or --output.\n"
     "  sod:   Riemann problem of an ideal gas, columns x,rho,v,P,u on [xmin, xmax] (both ends\n"
-    "         included) at time t, for a discontinuity at x0 (Toro 2009, ch. 4).\n"
+    "         included) at time t, for a discontinuity at x0 (Toro 2009, ch. 4); with --x-file\n"
+    "         at the x values of FILE instead, written to the last digit (the apps' L1 errors).\n"
     "  sedov: Sedov-Taylor blast of energy E in gas of density rho0, columns r,rho,v,P,u at the\n"
     "         centres of `points` equal cells of [0, rmax] (the centre r = 0 has rho = 0 and\n"
-    "         infinite u). In 1D E is the energy of the whole slab (both sides of x = 0).");
+    "         infinite u). In 1D E is the energy of the whole slab (both sides of x = 0). With\n"
+    "         --shock one row t,R,rho,v,P: the shock radius R(t) and the post-shock state, to the\n"
+    "         last digit (the shells of the app's comparison).");
   parser.flag("help", "print this help and exit")
     .positional("problem", "sod or sedov")
     .value("output", "FILE", "write the CSV to FILE instead of stdout")
@@ -47,10 +51,12 @@ options command_line() {
     .value("x0", "X", "sod: initial position of the discontinuity", "0")
     .value("xmin", "X", "sod: left end of the profile", "-0.5")
     .value("xmax", "X", "sod: right end of the profile", "0.5")
+    .value("x-file", "FILE", "sod: evaluate at the x values in FILE (one number per line) instead of a grid")
     .value("dim", "D", "sedov: 1 (planar), 2 (cylindrical) or 3 (spherical)", "3")
     .value("energy", "E", "sedov: blast energy", "1")
     .value("rho0", "RHO", "sedov: ambient density", "1")
-    .value("rmax", "R", "sedov: outer radius of the profile (default: 1.25 shock radius)");
+    .value("rmax", "R", "sedov: outer radius of the profile (default: 1.25 shock radius)")
+    .flag("shock", "sedov: write the shock radius and the post-shock state instead of a profile");
   return parser;
 }
 
@@ -98,14 +104,35 @@ void write_sod(const options& parser, std::ostream& out) {
   const analytic::riemann_solution solution(left, right, gamma);
 
   out << "x,rho,v,P,u\n";
-  for (int i = 0; i < points; ++i) {
-    const double x = i + 1 == points ? xmax : xmin + (xmax - xmin) * i / (points - 1);
+  const auto write = [&](double x) {
     // At t = 0 the initial data; the discontinuity itself belongs to the right state.
     const analytic::riemann_state q =
       t > 0.0 ? solution.at(x, t, x0) : (x < x0 ? left : right);
     out << x << ',' << q.rho << ',' << q.v << ',' << q.P << ','
         << analytic::specific_internal_energy(q, gamma) << '\n';
+  };
+  if (parser.has("x-file")) {
+    // The points of a caller that compares with particles (plot_sod.py's L1 errors): every value
+    // read and written exactly, so the differences are those the app's own errors sum.
+    std::ifstream file(parser.get("x-file"));
+    if (!file) throw std::runtime_error("cannot open --x-file '" + parser.get("x-file") + "'");
+    out << std::setprecision(std::numeric_limits<double>::max_digits10);
+    for (std::string line; std::getline(file, line);) {
+      if (line.empty()) continue;
+      std::size_t used = 0;
+      double x = 0;
+      try {
+        x = std::stod(line, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != line.size() || !std::isfinite(x))
+        throw options_error("--x-file '" + parser.get("x-file") + "': '" + line + "' is not a finite number");
+      write(x);
+    }
+    return;
   }
+  for (int i = 0; i < points; ++i) write(i + 1 == points ? xmax : xmin + (xmax - xmin) * i / (points - 1));
 }
 
 void write_sedov(const options& parser, std::ostream& out) {
@@ -115,6 +142,12 @@ void write_sedov(const options& parser, std::ostream& out) {
   if (points < 1) throw options_error("--points must be at least 1");
   const analytic::sedov_taylor blast(integer(parser, "dim"), number(parser, "gamma"),
                                      number(parser, "energy"), number(parser, "rho0"));
+  if (parser.has("shock")) {
+    const analytic::sedov_state q = blast.post_shock(t);
+    out << "t,R,rho,v,P\n" << std::setprecision(std::numeric_limits<double>::max_digits10) << t << ','
+        << blast.shock_radius(t) << ',' << q.rho << ',' << q.v << ',' << q.P << '\n';
+    return;
+  }
   const double rmax = parser.has("rmax") ? number(parser, "rmax") : 1.25 * blast.shock_radius(t);
   if (!(rmax > 0.0)) throw options_error("--rmax must be > 0");
 
