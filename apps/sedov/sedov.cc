@@ -30,7 +30,8 @@ template<int D>
 void report(sedov_run<D>& s) {
   s.blast = sedov::compare_with_sedov_taylor(s, s.problem);
   std::ostringstream line;
-  line << std::setprecision(4) << "sedov: at t = " << s.time << " the shock front (half height) is at r = "
+  // 12 digits: plot_sedov.py reports the same comparison, apps.sedov.plot_matches_app compares them.
+  line << std::setprecision(12) << "sedov: at t = " << s.time << " the shock front (half height) is at r = "
        << s.blast.front_radius << ", Sedov-Taylor shock radius " << s.blast.shock_radius << ", relative difference "
        << s.blast.relative_error() << "; the density peaks at r = " << s.blast.peak_radius << " (mean "
        << s.blast.peak_density << "; strong shock " << s.blast.analytic_peak << "); relative energy change "

@@ -2,13 +2,20 @@
 """Plots a Sod shock-tube result (one step of an H5Part file) against the exact Riemann solution.
 
 Writes a PNG with density, velocity, pressure and internal energy against x, and prints the L1
-errors (mean absolute error over the particles with |x - x0| < 0.4) of density, pressure and
-velocity. The exact solution comes from the project's own solver (apps/exact/exact_solution).
+errors of density, pressure and velocity as the app defines them (apps/sod/sod_problem.hh,
+measure_l1_errors): the mean absolute error over the fluid particles (kind 0) with
+|x - x_interface| < l1_window (the run's value, from the parameters the file holds), against the
+exact solution evaluated at each particle's x, summed exactly. Run on the app's last step, the
+errors are the ones the app printed (test apps.sod.plot_l1_matches_app). The exact solution comes
+from the project's own solver (apps/exact/exact_solution).
 
     plot_sod.py sod.h5part [--step N] [--output sod.png] [--exact build/apps/exact/exact_solution]
 """
+import math
 import os
+import re
 import sys
+import tempfile
 
 import numpy as np
 
@@ -18,22 +25,50 @@ import h5part_plot  # noqa: E402
 PROGRAM = "plot_sod"
 
 
+def riemann_arguments(time, gamma, left, right, x0):
+    return ["sod", "--t", repr(time), "--gamma", repr(gamma), "--rho-left", repr(left[0]), "--p-left", repr(left[1]),
+            "--rho-right", repr(right[0]), "--p-right", repr(right[1]), "--x0", repr(x0)]
+
+
 def exact_profile(exact, time, gamma, left, right, x0, xmin, xmax):
-    return h5part_plot.exact_solution(exact, [
-        "sod", "--t", repr(time), "--gamma", repr(gamma), "--rho-left", repr(left[0]), "--p-left", repr(left[1]),
-        "--rho-right", repr(right[0]), "--p-right", repr(right[1]), "--x0", repr(x0), "--xmin", repr(xmin),
-        "--xmax", repr(xmax), "--points", "2000"], PROGRAM)
+    """The exact solution on 2000 points of [xmin, xmax], for the figure."""
+    return h5part_plot.exact_solution(exact, riemann_arguments(time, gamma, left, right, x0) + [
+        "--xmin", repr(xmin), "--xmax", repr(xmax), "--points", "2000"], PROGRAM)
 
 
 def exact_at(exact, x, time, gamma, left, right, x0):
-    """The exact solution sampled at the particle positions (through a dense profile)."""
-    profile = exact_profile(exact, time, gamma, left, right, x0, float(x.min()), float(x.max()))
-    return {k: np.interp(x, profile["x"], profile[k]) for k in ("rho", "v", "P", "u")}, profile
+    """The exact solution at the positions x themselves (exact_solution --x-file), as the app evaluates it."""
+    with tempfile.NamedTemporaryFile("w", suffix=".txt") as positions:
+        positions.write("".join(repr(float(value)) + "\n" for value in x))
+        positions.flush()
+        values = h5part_plot.exact_solution(exact, riemann_arguments(time, gamma, left, right, x0) + [
+            "--x-file", positions.name], PROGRAM)
+    if len(values["x"]) != len(x) or not np.array_equal(values["x"], x):
+        sys.exit(f"{PROGRAM}: exact_solution --x-file did not return the {len(x)} positions it was given")
+    return values
+
+
+def run_parameter(attributes, key):
+    """A key of the run's resolved parameters (the 'parameters' attribute the apps write), or None."""
+    text = attributes.get("parameters")
+    if text is None:
+        return None
+    text = text.decode() if isinstance(text, bytes) else str(text)
+    match = re.search(r"^%s\s*=\s*([^\s#]+)" % re.escape(key), text, re.MULTILINE)
+    return float(match.group(1)) if match else None
+
+
+def l1_errors(data, exact, inside):
+    """Means of |particle - exact| over `inside`, summed exactly (math.fsum; the app's exact_sum)."""
+    count = int(inside.sum())
+    return {key: math.fsum(np.abs(data[particle][inside] - exact[key][inside]).tolist()) / count if count else 0.0
+            for key, particle in (("rho", "rho"), ("P", "P"), ("v", "vx"))}, count
 
 
 def main():
     parser = h5part_plot.command_line(__doc__)
-    parser.add_argument("--window", type=float, default=0.4, help="L1 errors over |x - x0| < window")
+    parser.add_argument("--window", type=float,
+                        help="L1 errors over |x - x_interface| < window (default: the run's l1_window, else 0.4)")
     args = parser.parse_args()
 
     time, data, attributes = h5part_plot.read_step(args.file, args.step, PROGRAM)
@@ -42,21 +77,18 @@ def main():
     left = (number(attributes, "rho_left", 1.0), number(attributes, "p_left", 1.0))
     right = (number(attributes, "rho_right", 0.125), number(attributes, "p_right", 0.1))
     x0 = number(attributes, "x_interface", 0.0)
+    window = args.window if args.window is not None else run_parameter(attributes, "l1_window") or 0.4
     if "kind" in data:  # leave out the fixed wall particles (kind 1) beyond the ends
         fluid = data["kind"] == 0
         data = {k: v[fluid] for k, v in data.items()}
     x = data["x"]
     order = np.argsort(x)
-    exact, profile = exact_at(args.exact, x, time, gamma, left, right, x0)
-
-    inside = np.abs(x - x0) < args.window
-    errors = {
-        "rho": np.mean(np.abs(data["rho"][inside] - exact["rho"][inside])),
-        "P": np.mean(np.abs(data["P"][inside] - exact["P"][inside])),
-        "v": np.mean(np.abs(data["vx"][inside] - exact["v"][inside])),
-    }
-    print(f"Sod at t = {time:.4g}: L1 errors over {inside.sum()} particles with |x - x0| < {args.window}: "
-          f"density {errors['rho']:.3e}, pressure {errors['P']:.3e}, velocity {errors['v']:.3e}")
+    profile = exact_profile(args.exact, time, gamma, left, right, x0, float(x.min()), float(x.max()))
+    inside = np.abs(x - x0) < window
+    errors, count = l1_errors(data, exact_at(args.exact, x, time, gamma, left, right, x0), inside)
+    # The app's digits (sod.cc, report): 12 significant digits of each error.
+    print(f"Sod at t = {time:.4g}: L1 errors over {count} particles with |x - {x0:g}| < {window:g}: "
+          f"density {errors['rho']:.11e}, pressure {errors['P']:.11e}, velocity {errors['v']:.11e}")
 
     plt = h5part_plot.pyplot()
     figure, axes = plt.subplots(2, 2, figsize=(11, 8), sharex=True)
