@@ -181,13 +181,13 @@ function(flecsph_add_tutorial chapter)
 endfunction()
 
 # flecsph_add_fuzz_test(<name> SCRIPT <python file> [ARGS ...]): fuzz.<name> runs the seeded,
-# bounded fuzz driver (tests/fuzz) with /usr/bin/python3 on 1 rank, the apps launched through mpiexec;
-# label "fuzz" (ctest -L fuzz runs them all, ctest -LE fuzz leaves them out).
+# bounded fuzz driver (tests/fuzz) with /usr/bin/python3 on 1 rank, the apps started as MPI
+# singletons (an mpiexec per case doubled the test's time); label "fuzz" (ctest -L fuzz runs them
+# all, ctest -LE fuzz leaves them out).
 function(flecsph_add_fuzz_test name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "SCRIPT" "ARGS")
   add_test(NAME fuzz.${name}
     COMMAND /usr/bin/python3 ${arg_SCRIPT} ${arg_ARGS}
-            --launcher "${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 1 ${FLECSPH_MPIEXEC_FLAGS_STRING}"
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set_tests_properties(fuzz.${name} PROPERTIES LABELS fuzz PROCESSORS 2 TIMEOUT 900
     ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1")
