@@ -16,7 +16,21 @@ flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-fr
 cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DFLECSPH_SANITIZE="address;undefined" \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   ${FLECSPH_SANITIZE_CMAKE_ARGS:-} >"$build.configure.log" 2>&1 || { cat "$build.configure.log"; exit 1; }
-cmake --build "$build" -j "$jobs"
+# Only the programs of the selected tests (a full sanitizer build takes hours on a small machine):
+# every target of each test's folder (<folder>/all) and the paths under $build in its command.
+targets=$(cd "$build" && ctest --show-only=json-v1 -R "$tests" | python3 -c '
+import json, os, sys
+build, targets = sys.argv[1], set()
+for test in json.load(sys.stdin)["tests"]:
+    targets |= {os.path.basename(a) for a in test.get("command", []) if a.startswith(build + "/")}
+    for p in test.get("properties", []):
+        if p["name"] == "WORKING_DIRECTORY" and p["value"].startswith(build + "/"):
+            targets.add(os.path.relpath(p["value"], build) + "/all")
+print(" ".join(sorted(targets)))
+' "$build")
+[ -n "$targets" ] || { echo "sanitize.sh: no test matches '$tests'"; exit 1; }
+# shellcheck disable=SC2086
+cmake --build "$build" -j "$jobs" --target $targets
 # detect_leaks=0: Open MPI and HDF5 keep allocations alive until exit by design (hundreds of
 # "leaks" per MPI run that are not ours); memory errors and UB still stop the test.
 # halt_on_error / abort_on_error: the first error fails the test with its report on stderr.
