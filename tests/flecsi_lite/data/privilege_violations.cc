@@ -1,6 +1,6 @@
 // Code that breaks a task's privileges must not compile: each PRIVILEGE_CASE (1, 2, ...) is one
-// violation, built by the tests data.privileges.compile_fail.* and expected to fail with the
-// named diagnostic; case 0 is the same code obeying its privileges, which must build.
+// violation, built by the tests data.privileges.compile_fail.N and expected to fail with the
+// named diagnostic; case 0 (data.privileges.compile_within) obeys its privileges and must build.
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/execution.hh"
 
