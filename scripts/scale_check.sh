@@ -15,7 +15,7 @@ compare=$build/tests/validation/compare_h5part
 status=0
 run_case() {  # name app parameter-file options...
   local name=$1 app=$2 par=$3; shift 3
-  printf '%-10s %5s %6s %14s %14s %14s  %s\n' case ranks steps "msgs/rank/step" "bytes/rank/step" "max bytes/rank" bitwise
+  printf '%-10s %5s %6s %14s %14s %14s  %s\n' case ranks steps "msgs/rank/step" "bytes/rank/step" "max B/rank/step" bitwise
   for n in "${ranks[@]}"; do
     local out=$work/${name}_$n.h5part log=$work/${name}_$n.log
     mpirun -np "$n" "${FLECSPH_MPIRUN_FLAGS[@]}" "$build/apps/$app/$app" "$par" "$@" \
