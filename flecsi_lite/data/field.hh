@@ -3,15 +3,15 @@
 //   const field<double>::definition<narray> temperature{"temperature"};   // once, at namespace scope
 //   const field<double>::definition<narray> energy{"e", persist::output().restart()};  // persists
 //   execute<step>(temperature(mesh));                                       // a reference to mesh's storage
-//   void step(field<double>::accessor<rw, ro> t);                           // privileges: owned rw, ghost ro
+//   void step(field<double>::accessor<rw, ro> t);  // owned rw (t.owned(i) = ...), ghost ro (t(i) reads all)
 #pragma once
 
+#include "flecsi_lite/data/detail/access_error.hh"
 #include "flecsi_lite/data/field_registry.hh"
 #include "flecsi_lite/data/persistence.hh"
 #include "flecsi_lite/data/privilege.hh"
 #include "flecsi_lite/data/topology_base.hh"
 
-#include <cassert>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -19,34 +19,84 @@
 namespace flecsi_lite {
 
 /// What a task sees of a field: owned entities [0, owned_size()) and, when the ghost privilege
-/// is not na, ghost entities [owned_size(), size()).
+/// is not na, ghost entities [owned_size(), size()). Privileges are enforced per region:
+///   - a region without write privilege is reached through const references only: writing
+///     through an accessor<ro> or accessor<ro, ro> does not compile;
+///   - a region with privilege na is out of reach: owned(i) / ghost(j) / data() of an na region do
+///     not compile; f(i) of an accessor<na, G> on an owned entity throws, naming the field;
+///   - f(i) writes only where every region it spans is writable (accessor<rw, ro>: f(i) reads,
+///     f.owned(i) writes the owned values, and the ghosts stay read-only).
+/// Debug builds also check every index against the accessor's span.
 template<class T, privilege Owned, privilege Ghost>
 class accessor {
+  template<privilege P>
+  using region_element = std::conditional_t<writes(P), T, const T>;
+
 public:
   using value_type = T;
-  using element = std::conditional_t<writes(Owned) || writes(Ghost), T, const T>;
+  /// Of f(i): writable only when each region it spans is writable.
+  using element = std::conditional_t<Ghost == na, region_element<Owned>,
+                                     std::conditional_t<Owned == na, region_element<Ghost>,
+                                                        std::conditional_t<writes(Owned) && writes(Ghost), T, const T>>>;
+  using owned_element = region_element<Owned>;
+  using ghost_element = region_element<Ghost>;
   using view_type = typename data::field_storage<T>::view_type;
   static constexpr privilege owned_privilege = Owned;
   static constexpr privilege ghost_privilege = Ghost;
 
   accessor() = default;
-  accessor(view_type view, std::size_t owned, std::size_t ghosts)
-    : view_(view), owned_(owned), size_(owned + (Ghost == na ? 0 : ghosts)) {}
+  accessor(view_type view, std::size_t owned, std::size_t ghosts, const std::string* name = nullptr)
+    : view_(view), owned_(owned), size_(owned + (Ghost == na ? 0 : ghosts)), name_(name) {}
 
+  /// Entity i of the span [0, size()) (local index: owned first, then ghosts).
   KOKKOS_INLINE_FUNCTION element& operator()(std::size_t i) const {
-    assert(i < size_ && "entity outside the regions this accessor may touch");
+    static_assert(Owned != na || Ghost != na, "accessor<na, na> reaches no entity");
+    if constexpr (Owned == na) {  // the index decides the region: always checked
+      if (i < owned_) fail(i);
+    }
+#ifndef NDEBUG
+    if (i >= size_) fail(i);
+#endif
     return view_(i);
   }
   KOKKOS_INLINE_FUNCTION element& operator[](std::size_t i) const { return (*this)(i); }
+  /// Owned entity i < owned_size(), writable when the owned privilege writes.
+  KOKKOS_INLINE_FUNCTION owned_element& owned(std::size_t i) const {
+    static_assert(Owned != na, "the owned privilege is na: owned values are out of reach");
+#ifndef NDEBUG
+    if (i >= owned_) fail(i);
+#endif
+    return view_(i);
+  }
+  /// Ghost entity j < ghost_size() (local index owned_size() + j), writable when the ghost
+  /// privilege writes.
+  KOKKOS_INLINE_FUNCTION ghost_element& ghost(std::size_t j) const {
+    static_assert(Ghost != na, "the ghost privilege is na: ghost values are out of reach");
+#ifndef NDEBUG
+    if (owned_ + j >= size_) fail(owned_ + j);
+#endif
+    return view_(owned_ + j);
+  }
   KOKKOS_INLINE_FUNCTION std::size_t owned_size() const { return owned_; }
   KOKKOS_INLINE_FUNCTION std::size_t ghost_size() const { return size_ - owned_; }
   /// Entities this accessor may touch (owned, plus ghosts unless the ghost privilege is na).
   KOKKOS_INLINE_FUNCTION std::size_t size() const { return size_; }
-  element* data() const { return view_.data(); }
+  /// The span's values in one array (owned first): not for an accessor whose owned privilege is na.
+  element* data() const {
+    static_assert(Owned != na, "the owned privilege is na: data() would expose the owned values");
+    return view_.data();
+  }
+  /// The field's name (for messages), when the accessor was made from a field.
+  const std::string* name() const { return name_; }
 
 private:
+  [[noreturn]] void fail(std::size_t i) const {
+    data::detail::access_outside_privileges(name_, i, owned_, size_, Owned, Ghost);
+  }
+
   view_type view_;
   std::size_t owned_ = 0, size_ = 0;
+  const std::string* name_ = nullptr;
 };
 
 /// A field bound to one topology instance; what execute() takes as an argument.
@@ -64,7 +114,8 @@ public:
 
   template<privilege Owned, privilege Ghost>
   accessor<T, Owned, Ghost> make_accessor() const {
-    return {storage().view(), topology_->owned_size(), topology_->ghost_size()};
+    auto& values = storage();
+    return {values.view(), topology_->owned_size(), topology_->ghost_size(), &values.name()};
   }
 
 private:

@@ -3,14 +3,18 @@
 // The task's parameter types say how each argument is passed:
 //   accessor<T, owned, ghost>  <- a field reference: privileges recorded, dependencies derived
 //   T (a value)                <- a future<T>: the task waits for the launch producing it
-//   X& or const X&             <- an lvalue X: passed by reference (must outlive the launch)
-//   anything else              <- copied when the task is launched
+//   X& or const X&             <- an lvalue X of a shared_argument type (topologies and the
+//                                 types that opt in, shared_argument.hh): by reference
+//   const X&, X (a value)      <- anything else: copied when the task is launched, so later
+//                                 changes by the caller do not reach the task
+// A non-const X& of any other type does not compile (the task would write a private copy).
 #pragma once
 
 #include "flecsi_lite/data/field.hh"
 #include "flecsi_lite/execution/executor.hh"
 #include "flecsi_lite/execution/future.hh"
 #include "flecsi_lite/execution/reduction.hh"
+#include "flecsi_lite/execution/shared_argument.hh"
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/runtime/timers.hh"
 
@@ -61,7 +65,14 @@ struct collector {
 
 /// Holds one argument from launch to run time and converts it to the task's parameter.
 template<class Param, class Arg, class = void>
-struct binder {  // copy
+struct binder {  // copy, at launch
+  static_assert(!std::is_lvalue_reference_v<Param> || std::is_const_v<std::remove_reference_t<Param>>,
+                "a task parameter X& (non-const reference) takes only shared_argument types "
+                "(flecsi_lite/execution/shared_argument.hh): take the value or a const reference "
+                "(both copied at launch), or pass the data as a field");
+  static_assert(std::is_copy_constructible_v<std::decay_t<Arg>>,
+                "task arguments are copied at launch; a type that cannot be copied must opt in "
+                "through flecsi_lite::execution::shared_argument to travel by reference");
   std::decay_t<Arg> value;
   explicit binder(Arg&& a) : value(std::forward<Arg>(a)) {}
   void collect(collector&) const {}
@@ -70,9 +81,12 @@ struct binder {  // copy
 
 template<class Param, class Arg>
 struct binder<Param, Arg,
-              std::enable_if_t<std::is_lvalue_reference_v<Param> && std::is_lvalue_reference_v<Arg> &&
+              std::enable_if_t<std::is_lvalue_reference_v<Param> && shared_argument_v<Arg> &&
                                !is_field_reference<std::decay_t<Arg>>::value &&
                                !is_future<std::decay_t<Arg>>::value>> {  // by reference
+  static_assert(std::is_lvalue_reference_v<Arg>, "a shared argument is passed as itself, not as a temporary");
+  static_assert(std::is_const_v<std::remove_reference_t<Param>> || !std::is_const_v<std::remove_reference_t<Arg>>,
+                "a task parameter X& needs a non-const argument");
   std::remove_reference_t<Arg>* pointer;
   explicit binder(Arg&& a) : pointer(&a) {}
   void collect(collector&) const {}

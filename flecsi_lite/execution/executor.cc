@@ -53,6 +53,7 @@ executor::executor() : epoch_(std::chrono::steady_clock::now()) {
     } catch (const std::exception& e) {
       log::error() << "flecsi_lite: " << e.what();
     }
+    if (runtime::current_settings().timers) detail::report_ghost_traffic(traffic_, std::cout);
     if (trace_file.empty()) return;
     std::ofstream out;
     if (runtime::rank() == 0) out.open(trace_file);
@@ -181,7 +182,7 @@ launch_ptr executor::record_ghost_copy(const std::vector<const field_access*>& f
     l->name += (storages.size() == 1 ? " " : ", ") + a->storage->name();
   }
 
-  l->start = detail::ghost_copy_start(topology, std::move(storages), tag);
+  l->start = detail::ghost_copy_start(topology, std::move(storages), tag, &traffic_);
 
   for (const field_access* a : fields) {
     field_state& state = fields_[{topology->instance_id(), a->field}];

@@ -35,6 +35,13 @@
 
 namespace flecsi_lite::execution {
 
+/// What this rank's ghost copies sent and received (messages to and from other ranks; a
+/// periodic image of the rank's own entities is no message).
+struct ghost_traffic {
+  std::uint64_t messages_sent = 0, bytes_sent = 0;
+  std::uint64_t messages_received = 0, bytes_received = 0;
+};
+
 /// One field argument of a launch and its privileges per region.
 struct field_access {
   data::topology_base* topology;
@@ -70,6 +77,8 @@ public:
   /// (each one message per peer).
   std::uint64_t ghost_copies_started() const { return ghost_copies_; }
   std::uint64_t ghost_updates_started() const { return ghost_updates_; }
+  /// Messages and bytes of the ghost copies started so far (printed with the timers at exit).
+  const ghost_traffic& traffic() const { return traffic_; }
 
   /// Tracing: every completed launch is recorded while enabled (also with --trace FILE).
   void enable_tracing(bool on) { tracing_ = on; }
@@ -125,6 +134,7 @@ private:
   std::uint64_t next_sequence_ = 0;
   std::uint64_t next_collective_recorded_ = 0, next_collective_started_ = 0;
   std::uint64_t ghost_copies_ = 0, ghost_updates_ = 0;
+  ghost_traffic traffic_;
   bool tracing_ = false;
   bool inside_launch_ = false, polling_ = false;
   std::size_t failures_ = 0;                 // failed launches (their own exception)

@@ -2,6 +2,7 @@
 // buffer per peer, post one receive and one send per peer; the finish unpacks per field.
 #include "flecsi_lite/execution/detail/ghost_copy.hh"
 
+#include "flecsi_lite/execution/executor.hh"
 #include "flecsi_lite/runtime/context.hh"
 
 #include <memory>
@@ -9,9 +10,10 @@
 namespace flecsi_lite::execution::detail {
 
 std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
-                                              std::vector<data::field_storage_base*> storages, int tag) {
+                                              std::vector<data::field_storage_base*> storages, int tag,
+                                              ghost_traffic* traffic) {
   auto receive_buffers = std::make_shared<std::vector<std::vector<std::byte>>>();
-  return [topology, storages, tag, receive_buffers](launch& self) {
+  return [topology, storages, tag, receive_buffers, traffic](launch& self) {
     const auto& peers = topology->plan().peers;
     const std::size_t ghost_begin = topology->owned_size();
     const int me = runtime::rank();
@@ -37,6 +39,10 @@ std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
       MPI_Isend(send.data(), static_cast<int>(send.size()), MPI_BYTE, peer.rank, tag,
                 runtime::communicator(), &requests[1]);
       self.requests.insert(self.requests.end(), requests, requests + 2);
+      ++traffic->messages_sent;
+      traffic->bytes_sent += send.size();
+      ++traffic->messages_received;
+      traffic->bytes_received += receive.size();
     }
     self.finish = [topology, storages, receive_buffers, send_buffers, me] {
       const auto& finished_peers = topology->plan().peers;
@@ -47,6 +53,19 @@ std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
                               finished_peers[p].receive_count);
     };
   };
+}
+
+void report_ghost_traffic(const ghost_traffic& traffic, std::ostream& out) {
+  const double mine[2] = {double(traffic.messages_sent), double(traffic.bytes_sent)};
+  double lo[2], hi[2], sum[2];
+  MPI_Allreduce(mine, lo, 2, MPI_DOUBLE, MPI_MIN, runtime::communicator());
+  MPI_Allreduce(mine, hi, 2, MPI_DOUBLE, MPI_MAX, runtime::communicator());
+  MPI_Allreduce(mine, sum, 2, MPI_DOUBLE, MPI_SUM, runtime::communicator());
+  if (runtime::rank() != 0) return;
+  const double ranks = runtime::size();
+  out << "Ghost copies per rank (min / mean / max over " << runtime::size() << " ranks): messages sent " << lo[0]
+      << " / " << sum[0] / ranks << " / " << hi[0] << ", bytes sent " << lo[1] << " / " << sum[1] / ranks << " / "
+      << hi[1] << "\n";
 }
 
 } // namespace flecsi_lite::execution::detail

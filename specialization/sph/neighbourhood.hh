@@ -150,3 +150,7 @@ coincident_pair find_coincident(const neighbourhood<D>& neighbours, ro_with_ghos
 }
 
 } // namespace flecsph::sph
+
+// The pair tasks read the lists by reference (large; the search waits for pending launches).
+template<int D>
+struct flecsi_lite::execution::shared_argument<flecsph::sph::neighbourhood<D>> : std::true_type {};

@@ -7,12 +7,24 @@
 #include "flecsi_lite/execution/launch.hh"
 
 #include <functional>
+#include <ostream>
 #include <vector>
+
+namespace flecsi_lite::execution {
+struct ghost_traffic;
+} // namespace flecsi_lite::execution
 
 namespace flecsi_lite::execution::detail {
 
-/// The launch's start: packs and posts; sets the launch's finish (unpack).
+
+/// The launch's start: packs and posts, counting messages and bytes in `traffic`; sets the
+/// launch's finish (unpack).
 std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
-                                              std::vector<data::field_storage_base*> storages, int tag);
+                                              std::vector<data::field_storage_base*> storages, int tag,
+                                              ghost_traffic* traffic);
+
+/// Collective: the ghost traffic per rank (min / mean / max over ranks of messages and bytes
+/// sent), written on rank 0 before the timer table.
+void report_ghost_traffic(const ghost_traffic& traffic, std::ostream& out);
 
 } // namespace flecsi_lite::execution::detail

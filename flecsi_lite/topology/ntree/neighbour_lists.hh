@@ -4,6 +4,7 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
+#include "flecsi_lite/execution/shared_argument.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 
 #include <algorithm>
@@ -106,3 +107,8 @@ inline std::size_t chunk_count_for(std::size_t work_items) {
 }
 
 } // namespace flecsi_lite::topology::ntree
+
+// Lists are large: tasks take them by reference (the searches that replace them wait for every
+// pending launch).
+template<>
+struct flecsi_lite::execution::shared_argument<flecsi_lite::topology::ntree::neighbour_lists> : std::true_type {};

@@ -30,6 +30,8 @@ double sum_with_ghosts(field<double>::accessor<ro, ro> f) {
   return s;
 }
 void nothing() {}
+double one() { return 1.0; }
+double first_plus(field<double>::accessor<ro> f, double extra) { return (f.size() ? f(0) : 0.0) + extra; }
 
 std::vector<std::string> completion_order() {
   std::vector<std::string> names;
@@ -67,6 +69,31 @@ TEST_CASE("write after write: the last write wins") {
   execute<set>(a(n), 9.0);
   execute<add>(a(n), 1.0);
   CHECK(execute<first>(a(n)).get() == 10.0);
+}
+
+// The two cases above run in program order anyway. Here the earlier launch waits for a
+// reduction's collective (communication, in flight for at least one scheduling round) while the
+// later one is ready at once: only the dependency keeps the later one from running first.
+TEST_CASE("write after read: a writer that could run first waits for a delayed reader") {
+  narray n(64, 1, false);
+  execute<set>(a(n), 5.0);
+  wait_all();
+  auto total = reduce<one, reduction::sum>();                // in flight for a while
+  auto seen = execute<first_plus>(a(n), total);              // reads a, waits for the collective
+  execute<set>(a(n), 7.0);                                   // ready at once without the edge
+  CHECK(seen.get() == 5.0 + runtime::size());
+  CHECK(execute<first>(a(n)).get() == 7.0);
+}
+
+TEST_CASE("write after write: a delayed writer is not overtaken by a later one") {
+  narray n(64, 1, false);
+  execute<set>(a(n), 1.0);
+  wait_all();
+  auto total = reduce<one, reduction::sum>();
+  execute<set>(a(n), total);  // the earlier writer waits for the collective
+  execute<set>(a(n), 9.0);    // the later writer: its value must be the final one
+  wait_all();                 // (a reader recorded now could run between the two writers)
+  CHECK(execute<first>(a(n)).get() == 9.0);
 }
 
 TEST_CASE("futures are task arguments: the task waits for the value") {

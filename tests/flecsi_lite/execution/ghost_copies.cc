@@ -104,3 +104,21 @@ TEST_CASE("a block smaller than the halo is a clear error") {
   if (runtime::size() < 2) return;
   CHECK_THROWS_WITH(narray(3, 2, true), Catch::Contains("smaller than the halo"));
 }
+
+TEST_CASE("ghost traffic counts the messages and bytes to other ranks, none to the rank itself") {
+  auto& ex = execution::executor::instance();
+  for (bool periodic : {false, true}) {
+    if (periodic && runtime::size() > 1) continue;  // one rank: its periodic images are no message
+    narray n(40, 2, periodic);
+    execute<fill_scaled_index>(n, u(n), 1.0);
+    wait_all();
+    const auto before = ex.traffic();
+    CHECK(all_ranks(execute<ghosts_hold>(n, u(n), 1.0).get()));
+    const auto after = ex.traffic();
+    const std::uint64_t neighbours = runtime::size() == 1 ? 0 : (runtime::rank() > 0) + (runtime::rank() + 1 < runtime::size());
+    CHECK(after.messages_sent - before.messages_sent == neighbours);
+    CHECK(after.messages_received - before.messages_received == neighbours);
+    CHECK(after.bytes_sent - before.bytes_sent == neighbours * n.halo() * sizeof(double));
+    CHECK(after.bytes_received - before.bytes_received == (neighbours ? n.ghost_size() * sizeof(double) : 0));
+  }
+}

@@ -30,6 +30,20 @@ double local_plain(field<double>::accessor<ro> f) {
   return s;
 }
 double twice(double x) { return 2 * x; }
+// Rank r's value: 1, 1e16, -1e16, 1, 1, 1e16, ... Summed left to right in rank order (1 + 1e16
+// rounds to 1e16) 4 ranks give 1, pairwise ((v0 + v1) + (v2 + v3)) 0.
+double order_sensitive(int r) {
+  const double values[4] = {1.0, 1e16, -1e16, 1.0};
+  return values[r % 4];
+}
+double my_order_sensitive() { return order_sensitive(runtime::rank()); }
+double one_after(double) { return 1.0; }
+double local_plain_with_ghosts(field<double>::accessor<ro, ro> f) {
+  double s = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) s += f(i);
+  return s;
+}
+double thousand_times_rank() { return 1000.0 * (runtime::rank() + 1); }
 } // namespace
 
 TEST_CASE("sum, min and max over ranks") {
@@ -59,4 +73,31 @@ TEST_CASE("a reduction's future feeds a task") {
   auto doubled = execute<twice>(total);
   const int p = runtime::size();
   CHECK(doubled.get() == p * (p + 1.0));
+}
+
+TEST_CASE("a sum over ranks adds in rank order (the documented canonical order)") {
+  const int p = runtime::size();
+  double expected = order_sensitive(0);
+  for (int r = 1; r < p; ++r) expected += order_sensitive(r);
+  const double combined = reduce<my_order_sensitive, reduction::sum>().get();
+  CHECK(combined == expected);  // bitwise: the same rounding steps
+  double lo = combined, hi = combined;
+  MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, runtime::communicator());
+  MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, runtime::communicator());
+  CHECK(lo == hi);
+}
+
+// Collectives match by the order each rank starts them. On rank 0 the first reduction's local
+// part waits for a future the other ranks do not pass (a task behind a ghost copy), while the
+// second's is ready at once: started as they become ready, rank 0 would start the second
+// collective while the others start the first, and the values would cross.
+TEST_CASE("reductions start their collectives in program order on every rank") {
+  narray n(64, 2, true);
+  execute<fill>(n, value(n));
+  auto delayed = execute<local_plain_with_ghosts>(value(n));  // waits for a ghost copy
+  auto first = runtime::rank() == 0 ? reduce<one_after, reduction::sum>(delayed) : reduce<one_after, reduction::sum>(0.0);
+  auto second = reduce<thousand_times_rank, reduction::sum>();
+  const int p = runtime::size();
+  CHECK(second.get() == 1000.0 * p * (p + 1) / 2);
+  CHECK(first.get() == p);
 }
