@@ -85,6 +85,7 @@ int run(const app::run_context& context) {
   s.problem = cold_collapse::problem_parameters().read(context.parameters());
   s.description = {{"sphere_radius", s.problem.radius},
                    {"sphere_mass", s.problem.mass},
+                   {"radius_mass_fraction", s.problem.mass_fraction},
                    {"gravitational_constant", s.gravitational_constant}};
   auto m = sph::make_app_control_model<cold_collapse_run>(
     {[](cold_collapse_run& state) {

@@ -11,7 +11,7 @@ W0 = -2/3 G M^2 / R, U0 = 0.05, E0 = -37/60 = -0.616667.
 Writes the radial profile at --time (r, rho, v, P, u, A = P / rho^gamma per shell) and the energies
 K, U, W, E against t (every --energy-every) as text files numpy.loadtxt reads:
 
-    evrard_reference.py [--shells 2000] [--time 0.8] [--end 3] \\
+    evrard_reference.py [--shells 1000] [--time 0.8] [--end 3] \\
         [--profile apps/evrard/evrard_reference_t0.8.txt] [--energies apps/evrard/evrard_reference_energies.txt]
 """
 import argparse
@@ -143,7 +143,7 @@ def solve(shells, profile_time, end_time, energy_every, courant, quadratic, line
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--shells", type=int, default=2000, help="equal-mass Lagrangian shells")
+    parser.add_argument("--shells", type=int, default=1000, help="equal-mass Lagrangian shells")
     parser.add_argument("--time", type=float, default=0.8, help="time of the profile")
     parser.add_argument("--end", type=float, default=3.0, help="end time of the energy history")
     parser.add_argument("--energy-every", type=float, default=0.01, help="interval of the energy rows")
