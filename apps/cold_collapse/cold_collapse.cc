@@ -83,6 +83,8 @@ int run(const app::run_context& context) {
   cold_collapse_run s;
   sph::configure(s, context);
   s.problem = cold_collapse::problem_parameters().read(context.parameters());
+  if (!s.physics.gravity.enabled) throw runtime::parameter_error("cold_collapse: the collapse needs gravity = true");
+  s.gravitational_constant = s.physics.gravity.constant;
   s.description = {{"sphere_radius", s.problem.radius},
                    {"sphere_mass", s.problem.mass},
                    {"radius_mass_fraction", s.problem.mass_fraction},
@@ -114,6 +116,7 @@ int main(int argc, char** argv) {
   // Without a parameter file: the problem of apps/cold_collapse/cold_collapse.par.
   definition.physics_defaults.eos.ideal.gamma = 5.0 / 3.0;
   definition.physics_defaults.conductivity = 0;
+  definition.physics_defaults.gravity.enabled = true;
   // No shocks before t_ff: the viscosity would act on every approaching pair of the homologous
   // collapse, and its one-sided force at the surface, ~ 2 beta (h / r) (1 - x) of gravity, brakes it.
   definition.physics_defaults.viscosity.alpha = 0;

@@ -41,8 +41,9 @@ void report(evrard_run& s) {
   const auto analytic = evrard::analytic_energies(s.problem, s.gravitational_constant);
   std::ostringstream line;
   line << std::setprecision(6) << "evrard: t = " << s.time << ": K = " << s.totals.kinetic
-       << ", U = " << s.totals.internal << ", E = " << s.totals.total << "; E0 = " << s.initial_totals.total
-       << " (continuous sphere: " << analytic.total() << "); largest |E - E0| / |E0| = " << std::scientific
+       << ", U = " << s.totals.internal << ", W = " << s.totals.potential << ", E = " << s.totals.total << "; E0 = " << s.initial_totals.total
+       << " (W0 = " << s.initial_totals.potential << "; continuous sphere: W0 = " << analytic.potential
+       << ", E0 = " << analytic.total() << "); largest |E - E0| / |E0| = " << std::scientific
        << std::setprecision(3) << s.largest_energy_error << " at t = " << std::defaultfloat << s.largest_error_time;
   log::info() << line.str();
 }
@@ -64,6 +65,8 @@ int run(const app::run_context& context) {
   s.problem = evrard::problem_parameters().read(context.parameters());
   if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
     throw runtime::parameter_error("evrard: the Evrard collapse needs eos = ideal_gas");
+  if (!s.physics.gravity.enabled) throw runtime::parameter_error("evrard: the Evrard collapse needs gravity = true");
+  s.gravitational_constant = s.physics.gravity.constant;
   s.description = {{"sphere_radius", s.problem.radius},
                    {"sphere_mass", s.problem.mass},
                    {"thermal_energy", s.problem.thermal_energy},
@@ -86,6 +89,7 @@ int main(int argc, char** argv) {
   // Without a parameter file: the problem of apps/evrard/evrard.par (validation.defaults.evrard).
   definition.physics_defaults.eos.ideal.gamma = 5.0 / 3.0;
   definition.physics_defaults.conductivity = 0;
+  definition.physics_defaults.gravity.enabled = true;
   definition.run_defaults.end_time = 3;
   definition.run_defaults.progress_every = 100;
   definition.run_defaults.diagnostics_every = 100;
