@@ -20,6 +20,12 @@ std::vector<site> ball_lattice(std::int64_t particles) {
           const site x{(double(i) + shift) * side, (double(j) + shift) * side, (double(k) + shift) * side};
           if (radius(x) <= 1.0) sites.push_back(x);
         }
+  // The ball holds a few sites more or fewer than its volume times the lattice's density: scaled
+  // so that it does not (N sites of the density 2 / a^3 fill the volume 4 pi / 3), a sphere of
+  // N particles of mass M / N has the mean density 3 M / (4 pi R^3) inside.
+  const double scale = std::cbrt(3.0 * double(sites.size()) * side * side * side / (8.0 * pi));
+  for (auto& x : sites)
+    for (double& component : x) component /= scale;
   return sites;
 }
 

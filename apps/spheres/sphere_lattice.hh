@@ -16,8 +16,10 @@ namespace sph = flecsph::sph;
 
 using site = std::array<double, 3>;
 
-/// The sites of a body-centred cubic lattice inside the unit ball (|x| <= 1), with the cell side
-/// chosen so that the ball holds about `particles` sites (2 per cell: a = (8 pi / (3 N))^(1/3)).
+/// The sites of a body-centred cubic lattice inside the unit ball, with the cell side chosen so that
+/// the ball holds about `particles` sites (2 per cell: a = (8 pi / (3 N))^(1/3)), then scaled so
+/// that the N sites it holds have the density N / (4 pi / 3) (the outermost may lie a few tenths
+/// of a percent beyond r = 1): equal masses M / N then have the sphere's mean density inside.
 /// Cell corners at integer multiples of a (one site at the origin): the set is symmetric under
 /// every axis reflection, so its centre of mass is the origin. A fixed order (x slowest), the same
 /// on every rank. `particles` >= 1.
