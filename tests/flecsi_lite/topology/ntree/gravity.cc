@@ -85,15 +85,14 @@ struct reference_set {
   fixture f;
   field exact;
   std::string name;
-  explicit reference_set(const std::string& name)
-    : f(gravity_set(name, 10000, 11)), exact(direct(f, spline_pair{})) {}
+  explicit reference_set(const std::string& set_name)
+    : f(gravity_set(set_name, 10000, 11)), exact(direct(f, spline_pair{})), name(set_name) {}
 };
 const reference_set& reference(const std::string& name) {
   static std::vector<std::unique_ptr<reference_set>> sets;
   for (const auto& set : sets)
-    if (set->f.set.size() > 0 && set->name == name) return *set;
+    if (set->name == name) return *set;
   sets.push_back(std::make_unique<reference_set>(name));
-  sets.back()->name = name;
   return *sets.back();
 }
 
@@ -302,7 +301,7 @@ TEST_CASE("interaction lists partition the sources and satisfy the criteria", "[
     const nt::gravity_options options = with_theta(theta);
     for (std::size_t g = 0; g < r.f.groups.size(); g += 37) {
       const auto& group = r.f.groups[g];
-      nt::detail::build_gravity_list<3>(sources, group, options, list);
+      nt::detail::build_gravity_list<3>(sources, group, options, sources.quadrupoles, list);
       std::vector<int> seen(r.f.size(), 0);
       for (const std::uint32_t index : list.nodes) {
         const auto& node = nodes[index];
@@ -327,6 +326,21 @@ TEST_CASE("interaction lists partition the sources and satisfy the criteria", "[
       }
       REQUIRE(p == list.particles());
     }
+  }
+}
+
+TEST_CASE("multipole_field is multipole_potential and multipole_acceleration at once",
+          "[ntree][gravity]") {
+  const reference_set& r = reference("evrard");
+  const auto& nodes = r.f.tree.nodes();
+  for (std::size_t index = 0; index < nodes.size(); index += 13) {
+    const auto& node = nodes[index];
+    const auto& q = r.f.tree.node_quadrupole(static_cast<std::uint32_t>(index));
+    const nt::point<3> x = {node.center[0] + 0.3, node.center[1] - 0.7, node.center[2] + 1.1};
+    nt::point<3> a;
+    const double phi = nt::multipole_field<3>(node.mass, node.center, q, x, a);
+    REQUIRE(phi == nt::multipole_potential<3>(node.mass, node.center, q, x));
+    REQUIRE(a == nt::multipole_acceleration<3>(node.mass, node.center, q, x));
   }
 }
 
