@@ -142,7 +142,7 @@ struct gravity_counts {
 /// The order of summation is part of the contract: for every group, one interaction list
 /// (depth-first from the root, children in node order; an accepted node is kept, an opened leaf
 /// gives its particles); then for each target of the group, sequentially, the accepted nodes in
-/// visit order (multipole_potential / multipole_acceleration), then the particles in visit
+/// visit order (multipole_field of multipole.hh), then the particles in visit
 /// order through `near`, each term added to running sums that start at zero. The result thus
 /// depends only on the visited nodes' data (bounds, centre, mass, h_max, quadrupole, children)
 /// and the particles' (x, m, h) in leaf order, not on threads or on where the tree came from.
@@ -159,12 +159,12 @@ gravity_counts gravity_walk(const gravity_sources<D>& sources,
     // One list per thread, kept between walks: no allocation once warm.
     thread_local detail::gravity_list<D> list;
     const target_group<D>& group = groups[g];
-    detail::build_gravity_list<D>(sources, group, options, list);
+    detail::build_gravity_list<D>(sources, group, options, quadrupoles, list);
     for (std::uint32_t i = group.begin; i < group.end; ++i) {
       point<D> a;
       double phi;
-      detail::sum_gravity_list<D>(sources, list, quadrupoles, targets.x[i],
-                                  targets.h ? targets.h[i] : 0.0, near, a, phi);
+      detail::sum_gravity_list<D>(list, targets.x[i], targets.h ? targets.h[i] : 0.0, near, a,
+                                  phi);
       if (acceleration) acceleration[i] = a;
       if (potential) potential[i] = phi;
     }

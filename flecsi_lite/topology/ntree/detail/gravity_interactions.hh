@@ -14,12 +14,16 @@
 
 namespace flecsi_lite::topology::ntree::detail {
 
-/// One group's interaction list: the accepted nodes (indices) and the particles of the opened
-/// leaves (copied, so the per-target loop streams through them), each in visit order. One per
-/// thread; the vectors only grow, so a warm list allocates nothing.
+/// One group's interaction list: the accepted nodes (indices, and copies of their moments) and
+/// the particles of the opened leaves (copies), each in visit order: the per-target loop
+/// streams through contiguous arrays. One per thread; the vectors only grow, so a warm list
+/// allocates nothing.
 template<int D>
 struct gravity_list {
   std::vector<std::uint32_t> nodes;
+  std::vector<double> node_mass;
+  std::vector<point<D>> node_center;
+  std::vector<quadrupole<D>> node_quadrupole;
   std::vector<point<D>> x;
   std::vector<double> m;
   std::vector<double> h;
@@ -27,6 +31,9 @@ struct gravity_list {
 
   void clear() {
     nodes.clear();
+    node_mass.clear();
+    node_center.clear();
+    node_quadrupole.clear();
     x.clear();
     m.clear();
     h.clear();
@@ -35,11 +42,12 @@ struct gravity_list {
 };
 
 /// Fills `list` for `group`: depth-first from the root, children in node order; an accepted
-/// node is kept, an opened leaf gives its particles, an opened inner node its children.
-/// Sources is gravity_sources<D>, Group target_group<D>, Options gravity_options.
+/// node is kept (with its quadrupole from `quadrupoles`, zero when nullptr), an opened leaf
+/// gives its particles, an opened inner node its children. Sources is gravity_sources<D>,
+/// Group target_group<D>, Options gravity_options.
 template<int D, class Sources, class Group, class Options>
 void build_gravity_list(const Sources& sources, const Group& group, const Options& options,
-                        gravity_list<D>& list) {
+                        const quadrupole<D>* quadrupoles, gravity_list<D>& list) {
   list.clear();
   if (sources.node_count == 0) return;
   std::vector<std::uint32_t>& stack = list.stack;
@@ -51,6 +59,9 @@ void build_gravity_list(const Sources& sources, const Group& group, const Option
     if (node.size() == 0) continue;
     if (gravity_accepts<D>(node, group, options)) {
       list.nodes.push_back(index);
+      list.node_mass.push_back(node.mass);
+      list.node_center.push_back(node.center);
+      list.node_quadrupole.push_back(quadrupoles ? quadrupoles[index] : quadrupole<D>::Zero());
     } else if (node.is_leaf()) {
       for (std::uint32_t b = node.begin; b < node.end; ++b) {
         list.x.push_back(sources.x[b]);
@@ -84,19 +95,16 @@ inline void add_pair(const point<D>& xi, double hi, const point<D>& xj, double m
 }
 
 /// The field at target (x, h) of `list`: first the accepted nodes in visit order (their
-/// multipoles; `quadrupoles` nullptr: monopoles), then the particles in visit order.
-template<int D, class Sources, class Near>
-inline void sum_gravity_list(const Sources& sources, const gravity_list<D>& list,
-                             const quadrupole<D>* quadrupoles, const point<D>& x, double h,
+/// multipoles), then the particles in visit order, added to running sums from zero.
+template<int D, class Near>
+inline void sum_gravity_list(const gravity_list<D>& list, const point<D>& x, double h,
                              const Near& near, point<D>& acceleration, double& potential) {
   point<D> a{};
   double phi = 0;
-  const quadrupole<D> none = quadrupole<D>::Zero();
-  for (const std::uint32_t index : list.nodes) {
-    const tree_node<D>& node = sources.nodes[index];
-    const quadrupole<D>& q = quadrupoles ? quadrupoles[index] : none;
-    phi += multipole_potential<D>(node.mass, node.center, q, x);
-    const point<D> field = multipole_acceleration<D>(node.mass, node.center, q, x);
+  for (std::size_t n = 0; n < list.nodes.size(); ++n) {
+    point<D> field;
+    phi += multipole_field<D>(list.node_mass[n], list.node_center[n], list.node_quadrupole[n], x,
+                              field);
     for (int k = 0; k < D; ++k) a[k] += field[k];
   }
   for (std::size_t p = 0; p < list.particles(); ++p)
