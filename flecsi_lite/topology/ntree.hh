@@ -1,10 +1,13 @@
 // The ntree topology (particles in 1, 2 and 3 dimensions), its public face: the distributed
 // ntree<D> (sample-sort distribution, branch sharing, ghosts), space-filling-curve keys, the local
-// hashed tree with its multipoles, and its searches (group walk, radius search, Barnes-Hut).
+// hashed tree with its multipoles, its searches (group walk, radius search, Barnes-Hut) and the
+// gravity walk, with its distributed tree (gravity_tree: locally essential trees).
 // Internals live in ntree/detail/ and ntree/distributed/; the brute-force and cell-list
 // references that tests and benchmarks compare the tree with, in ntree/reference/.
 #pragma once
 #include "flecsi_lite/topology/ntree/barnes_hut.hh"
+#include "flecsi_lite/topology/ntree/distributed/gravity_tree.hh"
+#include "flecsi_lite/topology/ntree/gravity.hh"
 #include "flecsi_lite/topology/ntree/group_walk.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/multipole.hh"

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "specialization/sph/driver.hh"
+#include "specialization/sph/gravity.hh"
 #include "specialization/sph/particle_input.hh"
 #include "specialization/sph/particle_output.hh"
 #include "specialization/sph/restart.hh"
@@ -228,18 +229,21 @@ void open_statistics(app_state<D>& s) {
     s.program + " statistics: a row every " + std::to_string(s.statistics_keys.every) +
       " steps and at the last one, written by rank 0 and flushed row by row",
     s.program + " " + flecsi_lite::app::version() + " (git " + flecsi_lite::app::git_describe() + "), " +
-      std::to_string(flecsi_lite::runtime::size()) + " MPI ranks; no gravity, so no potential energy column",
+      std::to_string(flecsi_lite::runtime::size()) + " MPI ranks; " +
+      (s.physics.gravity.enabled ? "self-gravity: total = kinetic + internal + potential + walls"
+                                 : "no gravity, so no potential energy column"),
     "parameters:"};
   std::string header;
   {
     std::vector<std::string> lines = description;
     std::istringstream parameters(s.parameters_text);
     for (std::string line; std::getline(parameters, line);) lines.push_back("  " + line);
-    header = statistics_header<D>(lines);
+    header = statistics_header<D>(lines, s.physics.gravity.enabled);
   }
   s.statistics.open(s.statistics_keys.file, header, s.restarted ? std::optional<long>(s.step) : std::nullopt);
   if (!s.restarted)
-    s.statistics.write(statistics_line<D>(s.step, s.time, 0.0, measure_conserved(s), mean_neighbours(s)));
+    s.statistics.write(statistics_line<D>(s.step, s.time, 0.0, measure_conserved(s), mean_neighbours(s),
+                                          s.physics.gravity.enabled));
 }
 
 /// A row every statistics_every steps and at the last; the totals of the conserved line when it
@@ -249,7 +253,7 @@ void statistics_row(app_state<D>& s) {
   const double dt = std::exchange(s.statistics_dt, s.dt);
   if (!s.statistics.is_open() || !(s.finished || s.step % s.statistics_keys.every == 0)) return;
   const conserved_totals<D> totals = s.totals_step == s.step ? s.totals : measure_conserved(s);
-  s.statistics.write(statistics_line<D>(s.step, s.time, dt, totals, mean_neighbours(s)));
+  s.statistics.write(statistics_line<D>(s.step, s.time, dt, totals, mean_neighbours(s), s.physics.gravity.enabled));
 }
 
 /// After the clock: a run that max_steps stopped before end_time, or whose wall_time_limit or
@@ -291,15 +295,18 @@ void checkpoint(app_state<D>& s) {
 }
 } // namespace detail
 
-/// The standard SPH control model (driver.hh) with the app's problem, the initial data, the
-/// output and the checkpoints; the app adds its reports on "finalize".
+/// The standard SPH control model (driver.hh) with the self-gravity action (place_gravity, a
+/// no-op unless gravity = on), the app's problem, the initial data, the output and the
+/// checkpoints; the app adds its reports on "finalize".
 template<class State>
 flecsi_lite::control::control_model<State> make_app_control_model(app_problem<State> problem) {
   constexpr int D = State::dimension;
   using base = app_state<D>;
   auto m = make_control_model<State>();
+  place_gravity(m);
   m.action("initial_data", "particles", [problem](State& s) {
     problem.set_domain(s);
+    check_gravity_domain<D>(s.physics, s.tree_settings.periodic);
     if (!s.files.restart_file.empty()) detail::restart<D>(s);
     else if (!s.files.initial_data.empty()) detail::read_initial_particles<D>(s);
     else problem.create_particles(s);

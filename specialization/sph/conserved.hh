@@ -1,5 +1,5 @@
-// Conserved quantities of an SPH run: mass, linear and angular momentum, kinetic, internal and
-// total energy, summed exactly (Demmel & Nguyen 2015 superaccumulator, util::exact_sum) so that
+// Conserved quantities of an SPH run: mass, linear and angular momentum, kinetic, internal,
+// gravitational potential (with self-gravity) and total energy, summed exactly (Demmel & Nguyen 2015 superaccumulator, util::exact_sum) so that
 // the totals are bitwise the same on any number of ranks and threads.
 #pragma once
 
@@ -26,7 +26,8 @@ struct conserved_totals {
   std::array<double, angular_components<D>> angular_momentum{};
   double kinetic = 0;
   double internal = 0;
-  double total = 0;    ///< kinetic + internal (+ the walls' work), summed exactly
+  double potential = 0;  ///< W = 1/2 sum m Phi (self-gravity; 0 without)
+  double total = 0;      ///< kinetic + internal + potential (+ the walls' work), summed exactly
   double boundary = 0; ///< the energy the walls received
 };
 
@@ -34,7 +35,7 @@ struct conserved_totals {
 template<int D>
 struct conserved_sums {
   using exact_sum = flecsi_lite::util::exact_sum;
-  exact_sum mass, kinetic, internal, total, boundary;
+  exact_sum mass, kinetic, internal, potential, total, boundary;
   std::array<exact_sum, D> momentum;
   std::array<exact_sum, angular_components<D>> angular_momentum;
 
@@ -42,6 +43,7 @@ struct conserved_sums {
     mass += other.mass;
     kinetic += other.kinetic;
     internal += other.internal;
+    potential += other.potential;
     total += other.total;
     boundary += other.boundary;
     for (int k = 0; k < D; ++k) momentum[k] += other.momentum[k];
@@ -54,6 +56,7 @@ struct conserved_sums {
     t.mass = mass.value();
     t.kinetic = kinetic.value();
     t.internal = internal.value();
+    t.potential = potential.value();
     t.total = total.value();
     t.boundary = boundary.value();
     for (int k = 0; k < D; ++k) t.momentum[k] = momentum[k].value();
@@ -86,13 +89,12 @@ std::array<double, angular_components<D>> cross(const vector<D>& x, const vector
 }
 } // namespace detail
 
-/// This rank's exact partial sums over its owned particles: fluid particles contribute m, m v,
-/// x cross m v, m v^2/2 and m u; walls contribute their boundary impulse m J and work m w.
+namespace detail {
+/// The sums of conserved_quantities; `potential` (G Phi per particle) is null without gravity.
 template<int D>
-conserved_sums<D> conserved_quantities(ro<vector<D>> x, ro<vector<D>> v,
-                                       ro<double> m, ro<double> u,
-                                       ro<particle_kind> kind, ro<vector<D>> impulse,
-                                       ro<double> work) {
+conserved_sums<D> conserved_sums_of(ro<vector<D>> x, ro<vector<D>> v, ro<double> m, ro<double> u,
+                                    ro<particle_kind> kind, ro<vector<D>> impulse, ro<double> work,
+                                    const double* potential) {
   // Chunks in parallel, each with its own accumulator; exact sums make the result order-free.
   const std::size_t n = x.size();
   const std::size_t threads = static_cast<std::size_t>(flecsi_lite::concurrency());
@@ -120,6 +122,11 @@ conserved_sums<D> conserved_quantities(ro<vector<D>> x, ro<vector<D>> v,
         sums.boundary.add(received);
         sums.total.add(received);
       }
+      if (potential) {  // walls are gravitating sources too: every particle's half of its pairs
+        const double energy = 0.5 * m(a) * potential[a];
+        sums.potential.add(energy);
+        sums.total.add(energy);
+      }
       for (int k = 0; k < D; ++k) sums.momentum[k].add(p[k]);
       const auto angular = detail::cross<D>(x(a), p);
       for (int k = 0; k < angular_components<D>; ++k) sums.angular_momentum[k].add(angular[k]);
@@ -127,6 +134,26 @@ conserved_sums<D> conserved_quantities(ro<vector<D>> x, ro<vector<D>> v,
   }, "sph::conserved_quantities");
   for (std::size_t c = 1; c < chunks; ++c) partial[0] += partial[c];
   return partial[0];
+}
+} // namespace detail
+
+/// This rank's exact partial sums over its owned particles: fluid particles contribute m, m v,
+/// x cross m v, m v^2/2 and m u; walls contribute their boundary impulse m J and work m w.
+template<int D>
+conserved_sums<D> conserved_quantities(ro<vector<D>> x, ro<vector<D>> v,
+                                       ro<double> m, ro<double> u,
+                                       ro<particle_kind> kind, ro<vector<D>> impulse,
+                                       ro<double> work) {
+  return detail::conserved_sums_of<D>(x, v, m, u, kind, impulse, work, nullptr);
+}
+
+/// The same with self-gravity: every particle (walls too) adds m Phi / 2 to the potential energy
+/// W = 1/2 sum_i m_i Phi_i and to the total (Phi_i includes the self term m_i phi(0, h_i)).
+template<int D>
+conserved_sums<D> conserved_quantities_with_gravity(ro<vector<D>> x, ro<vector<D>> v, ro<double> m, ro<double> u,
+                                                    ro<particle_kind> kind, ro<vector<D>> impulse,
+                                                    ro<double> work, ro<double> potential) {
+  return detail::conserved_sums_of<D>(x, v, m, u, kind, impulse, work, potential.data());
 }
 
 } // namespace flecsph::sph

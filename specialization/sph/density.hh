@@ -1,6 +1,7 @@
 // The density task: rho_a = sum_b m_b W(r_ab, h_a) (seed eq. 1.3), at fixed h or with the adaptive
 // h = eta (m/rho)^(1/D) solved per particle by Newton-Raphson, and the grad-h factor Omega
-// (Springel & Hernquist 2002; Price 2012, JCP 231, 759, sec. 3).
+// (Springel & Hernquist 2002; Price 2012, JCP 231, 759, sec. 3); with self-gravity also the
+// grad-h gravity factor zeta (Price & Monaghan 2007, MNRAS 374, 1347).
 #pragma once
 
 #include "specialization/sph/kernel_at.hh"
@@ -8,6 +9,7 @@
 #include "specialization/sph/settings.hh"
 #include "specialization/sph/tasks.hh"
 
+#include "specialization/physics/gravity_softening.hh"
 #include "specialization/physics/kernels.hh"
 #include "specialization/physics/smoothing_length.hh"
 
@@ -42,6 +44,69 @@ void density_sums(const neighbour_walk<D>& walk, std::size_t a, double h, const 
   rho = sum;
   drho_dh = derivative;
 }
+
+/// zeta_a / Omega_a with zeta_a = (dh_a/drho_a) sum_b m_b d phi(r_ab, h_a) / d h_a (Price & Monaghan
+/// 2007, sec. 3), dh/drho = -h / (3 rho) (0 for a fixed h): the self term b = a included.
+template<class Kernel, int D>
+double gravity_zeta_over_omega(const neighbour_walk<D>& walk, std::size_t a, double h, double rho, double omega,
+                               bool adapt, const vector<D>* x, const double* m) {
+  if constexpr (D != 3) {
+    return 0.0;  // gravity is 3D only (check_gravity_domain)
+  } else {
+    if (!adapt) return 0.0;
+    using softening = physics::softened_gravity<typename Kernel::shape>;
+    const double reach2 = physics::kernel_support * physics::kernel_support * h * h;
+    const vector<D>& x_a = x[a];
+    double sum = 0;
+    vector<D> r;
+    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
+      const std::size_t b = walk.neighbour(j);
+      const double r2 = walk.separation(x_a, x[b], j, r);
+      if (r2 >= reach2) continue;
+      sum += m[b] * softening::h_derivative(std::sqrt(r2), h);
+    }
+    return -h / (D * rho) * sum / omega;
+  }
+}
+
+/// The loop of compute_density; `zeta_over_omega` is null without gravity.
+template<int D, flecsi_lite::privilege Ghost>
+double density_loop(const neighbourhood<D>& neighbours, const physics_settings& settings, double earlier,
+                    const vector<D>* xs, const double* ms, ro<particle_kind> kind, rw<double> h, wo<double> rho,
+                    wo<double> omega, double* zeta_over_omega) {
+  const neighbour_walk<D> walk(neighbours);
+  const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
+  const double half_reach = 0.5 * neighbours.reach;
+  double worst = 0;
+  physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
+    using Kernel = decltype(kernel);
+    flecsi_lite::forall_reduce(
+      targets.size(),
+      [&](std::size_t i, double& local_worst) {
+        const std::size_t a = targets[i];
+        const double h_start = h(a), h_limit = half_reach * h_start;
+        const bool adapt = settings.adaptive_smoothing_length && kind(a) == particle_kind::fluid;
+        double h_a = h_start, rho_a = 0, drho_dh = 0;
+        for (int iteration = 1;; ++iteration) {
+          density_sums<Kernel, D>(walk, a, h_a, xs, ms, rho_a, drho_dh);
+          if (!adapt || iteration >= settings.h_iterations) break;
+          const double residual = physics::smoothing_length_residual<D>(h_a, rho_a, ms[a], settings.eta);
+          if (std::fabs(residual) < settings.h_tolerance) break;
+          h_a = physics::smoothing_length_newton_step<D>(h_a, rho_a, drho_dh, ms[a], settings.eta);
+          if (h_a > h_limit) break;  // the list may miss neighbours: search again
+        }
+        h(a) = h_a;
+        rho(a) = rho_a;
+        omega(a) = adapt ? physics::grad_h_omega<D>(h_a, rho_a, drho_dh) : 1.0;
+        // At h_a > h_limit the caller searches again and calls the task again: zeta is recomputed.
+        if (zeta_over_omega)
+          zeta_over_omega[a] = gravity_zeta_over_omega<Kernel, D>(walk, a, h_a, rho_a, omega(a), adapt, xs, ms);
+        local_worst = std::max(local_worst, h_a / h_limit);
+      },
+      Kokkos::Max<double>(worst), "sph::compute_density", target_schedule);
+  });
+  return std::max({worst, earlier, 0.0});  // no target: the reduction's identity is -inf
+}
 } // namespace detail
 
 /// Density (and, with adaptive h, the smoothing length and Omega) of the owned targets of one
@@ -56,37 +121,18 @@ template<int D, flecsi_lite::privilege Ghost>
 double compute_density(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
                        ro_neighbours<vector<D>, Ghost> x, ro_neighbours<double, Ghost> m, ro<particle_kind> kind,
                        rw<double> h, wo<double> rho, wo<double> omega) {
-  const neighbour_walk<D> walk(neighbours);
-  const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
-  const vector<D>* xs = x.data();
-  const double* ms = m.data();
-  const double half_reach = 0.5 * neighbours.reach;
-  double worst = 0;
-  physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
-    using Kernel = decltype(kernel);
-    flecsi_lite::forall_reduce(
-      targets.size(),
-      [&](std::size_t i, double& local_worst) {
-        const std::size_t a = targets[i];
-        const double h_start = h(a), h_limit = half_reach * h_start;
-        const bool adapt = settings.adaptive_smoothing_length && kind(a) == particle_kind::fluid;
-        double h_a = h_start, rho_a = 0, drho_dh = 0;
-        for (int iteration = 1;; ++iteration) {
-          detail::density_sums<Kernel, D>(walk, a, h_a, xs, ms, rho_a, drho_dh);
-          if (!adapt || iteration >= settings.h_iterations) break;
-          const double residual = physics::smoothing_length_residual<D>(h_a, rho_a, m(a), settings.eta);
-          if (std::fabs(residual) < settings.h_tolerance) break;
-          h_a = physics::smoothing_length_newton_step<D>(h_a, rho_a, drho_dh, m(a), settings.eta);
-          if (h_a > h_limit) break;  // the list may miss neighbours: search again
-        }
-        h(a) = h_a;
-        rho(a) = rho_a;
-        omega(a) = adapt ? physics::grad_h_omega<D>(h_a, rho_a, drho_dh) : 1.0;
-        local_worst = std::max(local_worst, h_a / h_limit);
-      },
-      Kokkos::Max<double>(worst), "sph::compute_density", target_schedule);
-  });
-  return std::max({worst, earlier, 0.0});  // no target: the reduction's identity is -inf
+  return detail::density_loop<D, Ghost>(neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
+                                        nullptr);
+}
+
+/// The same with self-gravity: also zeta_a / Omega_a for the force pass (detail::gravity_zeta_over_omega).
+template<int D, flecsi_lite::privilege Ghost>
+double compute_density_with_gravity(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+                                    ro_neighbours<vector<D>, Ghost> x, ro_neighbours<double, Ghost> m,
+                                    ro<particle_kind> kind, rw<double> h, wo<double> rho, wo<double> omega,
+                                    wo<double> zeta_over_omega) {
+  return detail::density_loop<D, Ghost>(neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
+                                        zeta_over_omega.data());
 }
 
 } // namespace flecsph::sph

@@ -30,6 +30,12 @@ template<int D>
 conserved_totals<D> measure_conserved(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
+  if (s.physics.gravity.enabled)
+    return flecsi_lite::reduce<conserved_quantities_with_gravity<D>, conserved_reduction>(
+             f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p),
+             f::boundary_impulse(p), f::boundary_work(p), f::gravitational_potential(p))
+      .get()
+      .totals();
   return flecsi_lite::reduce<conserved_quantities<D>, conserved_reduction>(
            f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p),
            f::boundary_impulse(p), f::boundary_work(p))
@@ -48,7 +54,9 @@ std::string describe_conserved(const conserved_totals<D>& t, const conserved_tot
     for (int k = 0; k < angular_components<D>; ++k) out << (k ? ", " : "") << t.angular_momentum[k];
     out << ")";
   }
-  out << "  kinetic " << t.kinetic << "  internal " << t.internal << "  total " << t.total;
+  out << "  kinetic " << t.kinetic << "  internal " << t.internal;
+  if (t.potential != 0) out << "  potential " << t.potential;
+  out << "  total " << t.total;
   if (t.boundary != 0) out << " (walls " << t.boundary << ")";
   out << std::setprecision(3) << "  relative energy change "
       << (initial.total != 0 ? (t.total - initial.total) / std::fabs(initial.total) : t.total - initial.total);
@@ -126,6 +134,13 @@ void run_summary(simulation<D>& s) {
                            << s.repeated_searches << " repeated searches; bytes per owned particle (rank 0): "
                            << std::setprecision(3) << bytes.fields << " in fields, " << bytes.neighbour_lists
                            << " in neighbour lists";
+  if (!s.physics.gravity.enabled) return;
+  const double owned = static_cast<double>(std::max<std::size_t>(1, s.particles->owned_size()));
+  flecsi_lite::log::info() << "sph: gravity in the last step (rank 0): " << std::setprecision(4)
+                           << double(s.last_gravity.node_interactions) / owned << " node and "
+                           << double(s.last_gravity.particle_interactions) / owned
+                           << " particle interactions per owned particle; " << s.last_gravity.imported_nodes
+                           << " nodes and " << s.last_gravity.imported_particles << " particles imported";
 }
 
 } // namespace flecsph::sph

@@ -74,6 +74,13 @@ struct fields {
   static inline const definition<vector<D>> boundary_impulse{
     "boundary_impulse", persist::as("impulse_x", "impulse_y", "impulse_z").restart()};
   static inline const definition<double> boundary_work{"boundary_work", persist::restart()};
+  // Self-gravity only (gravity = on; with it off no file holds them and no memory is taken,
+  // files_fields() in particle_output.hh): the potential G Phi (output and restart, for the
+  // potential energy), zeta / Omega of the grad-h gravity term (Price & Monaghan 2007), and the
+  // tree's acceleration G a (in memory only: the force pass adds it).
+  static inline const definition<double> gravitational_potential{"phi", persist::output().restart()};
+  static inline const definition<double> zeta_over_omega{"zeta_over_omega", persist::restart()};
+  static inline const definition<vector<D>> gravity_acceleration{"gravity_acceleration"};
   // In memory only: recomputed in every step.
   static inline const definition<vector<D>> velocity_half{"velocity_half"};  ///< v at the half step (leapfrog)
   static inline const definition<double> internal_energy_half{"u_half"};

@@ -1,6 +1,8 @@
 // The force task: acceleration (seed eq. 1.9) and du/dt (eq. 1.8) in the pairwise-antisymmetric
 // grad-h form (Price 2012, JCP 231, 759, eqs. 30-35), Monaghan & Gingold (1983) viscosity with the
-// optional Balsara switch, Price (2008) artificial conductivity, and each particle's time step.
+// optional Balsara switch, Price (2008) artificial conductivity, and each particle's time step;
+// with self-gravity the grad-h gravity term (Price & Monaghan 2007, MNRAS 374, 1347, sec. 3) and
+// the tree's acceleration, so that the time step sees the total acceleration.
 #pragma once
 
 #include "specialization/sph/density.hh"
@@ -26,11 +28,17 @@ struct force_fields {
   const vector<D>* x;
   const vector<D>* v;
   const double *m, *h, *rho, *P, *cs, *pressure_term, *u, *balsara;
+  // Self-gravity only: zeta / Omega (owned and ghosts), G a of the tree (owned) and G / 2.
+  const double* zeta_over_omega = nullptr;
+  const vector<D>* gravity_acceleration = nullptr;
+  double half_G = 0;
 };
 
 /// The sums of compute_forces for particle a: dv/dt, du/dt and the largest signal velocity, in
 /// list order. Conductivity is a compile-time choice: without it, the loop has less to keep live.
-template<class Kernel, bool Conductivity, int D>
+/// With GradHGravity the bracket of dv/dt has the grad-h gravity term (G/2)(z_a F_a + z_b F_b),
+/// z = zeta / Omega, as symmetric in (a, b) as the pressure term.
+template<class Kernel, bool Conductivity, bool GradHGravity, int D>
 void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields<D>& in,
                 const physics::viscosity_parameters& viscosity, double conductivity, vector<D>& dv_dt,
                 double& du, double& signal) {
@@ -58,7 +66,9 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
     const double Pi = r_dot_v < 0 ? physics::artificial_viscosity(viscosity, r_dot_v, r2, particle_a,
                                                                   {in.rho[b], c_b, h_b, in.balsara[b]})
                                   : 0.0;
-    const double bracket = (term_a * F_a + in.pressure_term[b] * F_b) + Pi * F_ab;
+    double bracket = (term_a * F_a + in.pressure_term[b] * F_b) + Pi * F_ab;
+    if constexpr (GradHGravity)
+      bracket += in.half_G * (in.zeta_over_omega[a] * F_a + in.zeta_over_omega[b] * F_b);
     const double m_b = in.m[b];
     for (int k = 0; k < D; ++k) sum_v[k] -= m_b * bracket * r[k];
     sum_u += m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v;
@@ -70,6 +80,51 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
   dv_dt = sum_v;
   du = sum_u;
   signal = largest;
+}
+} // namespace detail
+
+namespace detail {
+/// The loop of compute_forces over one part's targets; with `in.gravity_acceleration` set (self-
+/// gravity) the tree's acceleration is added, and the grad-h gravity term with in.zeta_over_omega.
+template<int D, flecsi_lite::privilege Ghost>
+double force_loop(const neighbourhood<D>& neighbours, const physics_settings& settings, double earlier,
+                  const force_fields<D>& in, ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt) {
+  const neighbour_walk<D> walk(neighbours);
+  const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
+  double smallest = std::numeric_limits<double>::max();
+  const auto loop = [&](auto kernel_type, auto with_conductivity, auto grad_h_gravity) {
+    using Kernel = decltype(kernel_type);
+    flecsi_lite::forall_reduce(
+      targets.size(),
+      [&](std::size_t i, double& local_smallest) {
+        const std::size_t a = targets[i];
+        vector<D> dv_dt;
+        double du, signal;
+        force_sums<Kernel, decltype(with_conductivity)::value, decltype(grad_h_gravity)::value, D>(
+          walk, a, in, settings.viscosity, settings.conductivity, dv_dt, du, signal);
+        if (in.gravity_acceleration)
+          for (int k = 0; k < D; ++k) dv_dt[k] += in.gravity_acceleration[a][k];
+        acceleration(a) = dv_dt;
+        du_dt(a) = du;
+        if (kind(a) != particle_kind::fluid) return;
+        double a2 = 0;
+        for (int k = 0; k < D; ++k) a2 += dv_dt[k] * dv_dt[k];
+        const double h_a = in.h[a];
+        double dt = physics::courant_time_step(settings.courant, h_a, signal);
+        if (a2 > 0) dt = std::min(dt, settings.acceleration_factor * std::sqrt(h_a / std::sqrt(a2)));
+        local_smallest = std::min(local_smallest, dt);
+      },
+      Kokkos::Min<double>(smallest), "sph::compute_forces", target_schedule);
+  };
+  physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel_type) {
+    const auto with_gravity_term = [&](auto with_conductivity) {
+      if (in.zeta_over_omega) loop(kernel_type, with_conductivity, std::true_type{});
+      else loop(kernel_type, with_conductivity, std::false_type{});
+    };
+    if (settings.conductivity > 0) with_gravity_term(std::true_type{});
+    else with_gravity_term(std::false_type{});
+  });
+  return std::min(smallest, earlier);
 }
 } // namespace detail
 
@@ -95,38 +150,31 @@ double compute_forces(const neighbourhood<D>& neighbours, physics_settings setti
                       ro_neighbours<double, Ghost> cs, ro_neighbours<double, Ghost> pressure_term,
                       ro_neighbours<double, Ghost> u, ro_neighbours<double, Ghost> balsara, ro<particle_kind> kind,
                       wo<vector<D>> acceleration, wo<double> du_dt) {
-  const neighbour_walk<D> walk(neighbours);
   const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
                                    P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
-  const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
-  double smallest = std::numeric_limits<double>::max();
-  const auto loop = [&](auto kernel_type, auto with_conductivity) {
-    using Kernel = decltype(kernel_type);
-    flecsi_lite::forall_reduce(
-      targets.size(),
-      [&](std::size_t i, double& local_smallest) {
-        const std::size_t a = targets[i];
-        vector<D> dv_dt;
-        double du, signal;
-        detail::force_sums<Kernel, decltype(with_conductivity)::value, D>(walk, a, in, settings.viscosity,
-                                                                       settings.conductivity, dv_dt, du, signal);
-        acceleration(a) = dv_dt;
-        du_dt(a) = du;
-        if (kind(a) != particle_kind::fluid) return;
-        double a2 = 0;
-        for (int k = 0; k < D; ++k) a2 += dv_dt[k] * dv_dt[k];
-        const double h_a = in.h[a];
-        double dt = physics::courant_time_step(settings.courant, h_a, signal);
-        if (a2 > 0) dt = std::min(dt, settings.acceleration_factor * std::sqrt(h_a / std::sqrt(a2)));
-        local_smallest = std::min(local_smallest, dt);
-      },
-      Kokkos::Min<double>(smallest), "sph::compute_forces", target_schedule);
-  };
-  physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel_type) {
-    if (settings.conductivity > 0) loop(kernel_type, std::true_type{});
-    else loop(kernel_type, std::false_type{});
-  });
-  return std::min(smallest, earlier);
+  return detail::force_loop<D, Ghost>(neighbours, settings, earlier, in, kind, acceleration, du_dt);
+}
+
+/// The same with self-gravity (Price & Monaghan 2007, sec. 3): dv_a/dt also has
+///   -(G/2) sum_b m_b [z_a F_a + z_b F_b] r_ab,   z = zeta / Omega (field zeta_over_omega),
+/// the grad-h gravity term (left out when settings.gravity.grad_h is off), and the tree's G a_a
+/// (field gravity_acceleration, the pair part softened with phi of the kernel); the time step
+/// sees the sum.
+template<int D, flecsi_lite::privilege Ghost>
+double compute_forces_with_gravity(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+                                   ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
+                                   ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> h,
+                                   ro_neighbours<double, Ghost> rho, ro_neighbours<double, Ghost> P,
+                                   ro_neighbours<double, Ghost> cs, ro_neighbours<double, Ghost> pressure_term,
+                                   ro_neighbours<double, Ghost> u, ro_neighbours<double, Ghost> balsara,
+                                   ro_neighbours<double, Ghost> zeta_over_omega, ro<vector<D>> gravity_acceleration,
+                                   ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt) {
+  detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
+                             P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
+  if (settings.gravity.grad_h) in.zeta_over_omega = zeta_over_omega.data();
+  in.gravity_acceleration = gravity_acceleration.data();
+  in.half_G = 0.5 * settings.gravity.constant;
+  return detail::force_loop<D, Ghost>(neighbours, settings, earlier, in, kind, acceleration, du_dt);
 }
 
 } // namespace flecsph::sph

@@ -7,15 +7,32 @@
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"
 
+#include <vector>
+
 namespace flecsph::sph {
 
+/// The registered fields that the files of run `s` hold (as their roles say): all but the
+/// self-gravity fields when gravity is off, so that such a run writes and reads what it did
+/// before gravity existed.
+template<int D>
+std::vector<flecsi_lite::data::registered_field> files_fields(const simulation<D>& s) {
+  auto all = flecsi_lite::data::registered_fields<particle_tree<D>>();
+  if (s.physics.gravity.enabled) return all;
+  using f = fields<D>;
+  std::vector<flecsi_lite::data::registered_field> kept;
+  for (auto& field : all)
+    if (field.name != f::gravitational_potential.name() && field.name != f::zeta_over_omega.name())
+      kept.push_back(std::move(field));
+  return kept;
+}
+
 /// Collective: writes every owned particle's output fields into the open step of `out` (today
-/// x y z, vx vy vz (zero beyond D), m rho P u h id, kind (0 fluid, 1 wall), cs, du_dt). After
-/// distribute() the ranks' owned particles concatenated are in (key, id) order, so the file's
-/// particle order does not depend on the rank count.
+/// x y z, vx vy vz (zero beyond D), m rho P u h id, kind (0 fluid, 1 wall), cs, du_dt, and phi
+/// with gravity). After distribute() the ranks' owned particles concatenated are in (key, id)
+/// order, so the file's particle order does not depend on the rank count.
 template<int D>
 void write_particle_arrays(flecsi_lite::io::h5part_writer& out, simulation<D>& s) {
-  flecsi_lite::data::write_fields(*s.particles, out, flecsi_lite::data::role::output);
+  flecsi_lite::data::write_registered_fields(*s.particles, files_fields(s), out, flecsi_lite::data::role::output);
 }
 
 /// Collective: one step at s.time (TimeValue, time, step, dt) with every owned particle.

@@ -45,7 +45,8 @@ inline const flecsi_lite::io::attribute_value& checkpoint_entry(const flecsi_lit
 namespace detail {
 /// The initial totals as run-state entries "initial_<quantity>", and back.
 template<int D>
-void store_totals(const conserved_totals<D>& t, flecsi_lite::io::run_state& state) {
+void store_totals(const conserved_totals<D>& t, bool gravity, flecsi_lite::io::run_state& state) {
+  if (gravity) state["initial_potential"] = t.potential;
   state["initial_mass"] = t.mass;
   state["initial_kinetic"] = t.kinetic;
   state["initial_internal"] = t.internal;
@@ -57,7 +58,7 @@ void store_totals(const conserved_totals<D>& t, flecsi_lite::io::run_state& stat
 }
 
 template<int D>
-conserved_totals<D> load_totals(const flecsi_lite::io::run_state& state, const std::string& path) {
+conserved_totals<D> load_totals(const flecsi_lite::io::run_state& state, bool gravity, const std::string& path) {
   const auto get = [&](const std::string& name) {
     return flecsi_lite::io::attribute_as<double>(checkpoint_entry(state, name, path),
                                                  "run state '" + name + "' of '" + path + "'");
@@ -68,6 +69,7 @@ conserved_totals<D> load_totals(const flecsi_lite::io::run_state& state, const s
   t.internal = get("initial_internal");
   t.total = get("initial_total");
   t.boundary = get("initial_boundary");
+  if (gravity) t.potential = get("initial_potential");
   for (int k = 0; k < D; ++k) t.momentum[k] = get("initial_momentum_" + std::to_string(k));
   for (int k = 0; k < angular_components<D>; ++k)
     t.angular_momentum[k] = get("initial_angular_momentum_" + std::to_string(k));
@@ -145,10 +147,10 @@ inline void check_ids(const flecsi_lite::io::h5part_reader& in) {
 template<int D>
 void write_restart_checkpoint(simulation<D>& s, const std::string& path, flecsi_lite::io::run_state state) {
   state["dimension"] = std::int64_t{D};
-  detail::store_totals(s.initial_totals, state);
+  detail::store_totals(s.initial_totals, s.physics.gravity.enabled, state);
   flecsi_lite::io::write_checkpoint(path, {s.time, s.step, s.dt}, state, [&](flecsi_lite::io::h5part_writer& out) {
     using flecsi_lite::data::role;
-    flecsi_lite::data::write_fields(*s.particles, out, role::output | role::restart);
+    flecsi_lite::data::write_registered_fields(*s.particles, files_fields(s), out, role::output | role::restart);
   });
 }
 
@@ -175,11 +177,11 @@ flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::
   detail::check_clock(in, contents.info, s.run.end_time);
   detail::check_ids(in);
   create_particles_for(s, in, 0);
-  flecsi_lite::data::read_fields(*s.particles, in, 0, flecsi_lite::data::role::restart);
+  flecsi_lite::data::read_registered_fields(*s.particles, files_fields(s), in, 0, flecsi_lite::data::role::restart);
   s.time = contents.info.time;
   s.step = contents.info.step;
   s.dt = contents.info.dt;
-  s.initial_totals = detail::load_totals<D>(contents.state, path);
+  s.initial_totals = detail::load_totals<D>(contents.state, s.physics.gravity.enabled, path);
   detail::distribute_as_written(s);
   s.restarted = true;
   return contents.state;

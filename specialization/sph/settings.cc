@@ -65,9 +65,33 @@ physics_block declare_physics(const physics_settings& defaults) {
   p.real("distribution_skin", &physics_settings::distribution_skin,
          "ghosts reach (1 + skin) times the search: distribute when used up")
     .range(0, 10);
+  p.boolean("gravity", member(&physics_settings::gravity, &gravity_settings::enabled),
+            "self-gravity softened with the kernel (Price & Monaghan 2007), 3D without periodic axes");
+  p.real("gravitational_constant", member(&physics_settings::gravity, &gravity_settings::constant),
+         "G of the self-gravity")
+    .greater_than(0)
+    .at_most(1e50);
+  p.real("gravity_theta", member(&physics_settings::gravity, &gravity_settings::theta),
+         "opening angle of the gravity tree (Barnes-Hut)")
+    .greater_than(0)
+    .at_most(1.5);
+  p.choice("gravity_criterion", member(&physics_settings::gravity, &gravity_settings::criterion),
+           gravity_criterion_names(), "opening criterion: theta alone, or GADGET-2's relative one as well");
+  p.real("gravity_relative_tolerance", member(&physics_settings::gravity, &gravity_settings::relative_tolerance),
+         "alpha of the relative criterion (force error relative to the last |a|)")
+    .greater_than(0)
+    .at_most(1);
+  p.boolean("gravity_grad_h", member(&physics_settings::gravity, &gravity_settings::grad_h),
+            "grad-h gravity term of Price & Monaghan (2007) (off only to measure its effect)");
   return p;
 }
 } // namespace
+
+const flecsi_lite::runtime::name_table<gravity_criterion>& gravity_criterion_names() {
+  static const flecsi_lite::runtime::name_table<gravity_criterion> table{
+    "gravity criterion", {{"geometric", gravity_criterion::geometric}, {"relative", gravity_criterion::relative}}};
+  return table;
+}
 
 parameter_block<physics_settings> physics_parameters(const physics_settings& defaults) {
   return declare_physics(defaults);

@@ -16,6 +16,25 @@
 
 namespace flecsph::sph {
 
+/// The opening criterion of the gravity tree: Barnes-Hut's geometric theta alone, or GADGET-2's
+/// relative criterion (Springel 2005, eq. 18) as well, with the previous step's |a|.
+enum class gravity_criterion { geometric, relative };
+
+/// The parameter-file names of the criteria ("geometric", "relative").
+const flecsi_lite::runtime::name_table<gravity_criterion>& gravity_criterion_names();
+
+/// Self-gravity: softened with the SPH kernel (Price & Monaghan 2007) on the gravity tree, in 3D
+/// without periodic axes (no Ewald summation yet).
+struct gravity_settings {
+  bool enabled = false;
+  double constant = 1.0;  ///< G
+  double theta = 0.5;     ///< Barnes-Hut opening angle
+  gravity_criterion criterion = gravity_criterion::geometric;
+  double relative_tolerance = 0.0025;  ///< alpha of the relative criterion
+  /// The grad-h gravity term of Price & Monaghan (2007); off only to measure what it does.
+  bool grad_h = true;
+};
+
 struct physics_settings {
   physics::kernel_type kernel = physics::kernel_type::cubic_spline;
   physics::equation_of_state eos{};
@@ -36,7 +55,24 @@ struct physics_settings {
   /// Ghosts are selected (1 + skin) times farther than the search reaches, so that the particles
   /// are distributed again only once their motion and the growth of h have used that room up.
   double distribution_skin = 0.5;
+  gravity_settings gravity{};
 };
+
+/// A parameter_error naming the key `gravity` unless gravity is off or the problem is 3D with no
+/// periodic axis (`periodic`: the domain's periodic axes, as the problem set them).
+template<int D, class Periodic>
+void check_gravity_domain(const physics_settings& physics, const Periodic& periodic) {
+  if (!physics.gravity.enabled) return;
+  if (D != 3)
+    throw flecsi_lite::runtime::parameter_error("gravity = on needs a 3D problem: this one is " + std::to_string(D) +
+                                                "D (the softened potential is that of a 3D kernel)");
+  for (int k = 0; k < D; ++k)
+    if (periodic[k])
+      throw flecsi_lite::runtime::parameter_error(
+        "gravity = on with periodic axes (axis " + std::to_string(k) +
+        " is periodic): periodic gravity needs Ewald summation, which does not exist yet; set gravity = off or use "
+        "an open domain");
+}
 
 /// The physics keys (kernel, eos, gamma, ..., distribution_skin), each bound to its member, with
 /// the defaults each problem chooses in `defaults` (by default those of physics_settings).

@@ -11,9 +11,18 @@
 #include "flecsi_lite/topology/ntree.hh"
 
 #include <chrono>
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 
 namespace flecsph::sph {
+
+/// What the last gravity evaluation of this rank did (update_gravity, gravity.hh): interactions
+/// of its targets and what the tree imported from other ranks.
+struct gravity_record {
+  std::uint64_t node_interactions = 0, particle_interactions = 0;
+  std::size_t imported_nodes = 0, imported_particles = 0;
+};
 
 template<int D>
 struct simulation {
@@ -45,6 +54,7 @@ struct simulation {
   long started_step = 0;     ///< step when the cycle started
   double started_time = 0;  ///< simulation time then
   double elapsed = 0;  ///< wall seconds since the cycle started
+  gravity_record last_gravity;  ///< self-gravity only
 
   // Between the actions of one step.
   flecsi_lite::future<double> next_time_step;

@@ -50,8 +50,9 @@ struct statistics_column {
   std::string name, meaning, unit;
 };
 
+/// The columns; with self-gravity (`gravity`) a potential energy column after the internal one.
 template<int D>
-std::vector<statistics_column> statistics_columns() {
+std::vector<statistics_column> statistics_columns(bool gravity = false) {
   static const char* axes[] = {"x", "y", "z"};
   std::vector<statistics_column> columns = {
     {"step", "step number", "1"},
@@ -61,6 +62,11 @@ std::vector<statistics_column> statistics_columns() {
     {"internal", "internal energy, sum of m u over the fluid particles", "M L^2 T^-2"},
     {"walls", "energy the wall particles received (work of the fluid on them)", "M L^2 T^-2"},
     {"total", "total energy, kinetic + internal + walls, summed exactly", "M L^2 T^-2"}};
+  if (gravity) {
+    columns.insert(columns.begin() + 5, {"potential", "gravitational energy W = 1/2 sum m Phi (self terms included)",
+                                         "M L^2 T^-2"});
+    columns.back().meaning = "total energy E = kinetic + internal + potential + walls, summed exactly";
+  }
   for (int k = 0; k < D; ++k)
     columns.push_back({std::string("momentum_") + axes[k], "linear momentum (walls' impulse included)", "M L T^-1"});
   const char* angular_axes[] = {D == 2 ? "z" : "x", "y", "z"};
@@ -74,11 +80,11 @@ std::vector<statistics_column> statistics_columns() {
 
 /// The header: `description` lines, each column with its meaning and unit, then the column line.
 template<int D>
-std::string statistics_header(const std::vector<std::string>& description) {
+std::string statistics_header(const std::vector<std::string>& description, bool gravity = false) {
   std::ostringstream out;
   for (const auto& line : description) out << "# " << line << "\n";
   out << "# columns (code units: L, M, T are the units of length, mass and time the parameters use):\n";
-  const auto columns = statistics_columns<D>();
+  const auto columns = statistics_columns<D>(gravity);
   std::string names;
   for (std::size_t c = 0; c < columns.size(); ++c) {
     out << "# " << std::setw(3) << c + 1 << " " << columns[c].name << " [" << columns[c].unit
@@ -89,10 +95,13 @@ std::string statistics_header(const std::vector<std::string>& description) {
   return out.str();
 }
 
-/// One row, every real with 17 significant digits (read back exactly).
+/// One row, every real with 17 significant digits (read back exactly); the potential energy with
+/// self-gravity (`gravity`, as in the header).
 template<int D>
-std::string statistics_line(long step, double time, double dt, const conserved_totals<D>& t, double mean_neighbours) {
+std::string statistics_line(long step, double time, double dt, const conserved_totals<D>& t, double mean_neighbours,
+                            bool gravity = false) {
   std::vector<double> values = {time, dt, t.kinetic, t.internal, t.boundary, t.total};
+  if (gravity) values.insert(values.begin() + 4, t.potential);
   for (int k = 0; k < D; ++k) values.push_back(t.momentum[k]);
   for (int k = 0; k < angular_components<D>; ++k) values.push_back(t.angular_momentum[k]);
   values.push_back(t.mass);

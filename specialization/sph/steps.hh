@@ -125,17 +125,21 @@ template<int D>
 void update_density(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
+  const auto launch = [&](auto... field) {
+    if (s.physics.gravity.enabled) {
+      auto interior = flecsi_lite::execute<compute_density_with_gravity<D, flecsi_lite::na>>(
+        s.neighbours, s.physics, 0.0, field..., f::zeta_over_omega(p));
+      return flecsi_lite::reduce<compute_density_with_gravity<D, flecsi_lite::ro>, flecsi_lite::reduction::max>(
+        s.neighbours, s.physics, interior, field..., f::zeta_over_omega(p));
+    }
+    auto interior = flecsi_lite::execute<compute_density<D, flecsi_lite::na>>(s.neighbours, s.physics, 0.0, field...);
+    return flecsi_lite::reduce<compute_density<D, flecsi_lite::ro>, flecsi_lite::reduction::max>(
+      s.neighbours, s.physics, interior, field...);
+  };
   for (int attempt = 0;; ++attempt) {
-    const double worst = std::apply(
-      [&](auto... field) {
-        auto interior = flecsi_lite::execute<compute_density<D, flecsi_lite::na>>(s.neighbours, s.physics, 0.0,
-                                                                                  field...);
-        return flecsi_lite::reduce<compute_density<D, flecsi_lite::ro>, flecsi_lite::reduction::max>(
-          s.neighbours, s.physics, interior, field...);
-      },
-      std::make_tuple(f::position()(p), f::mass()(p), f::kind(p), f::smoothing_length()(p), f::density(p),
-                      f::omega(p)))
-      .get();
+    const double worst = std::apply(launch, std::make_tuple(f::position()(p), f::mass()(p), f::kind(p),
+                                                            f::smoothing_length()(p), f::density(p), f::omega(p)))
+                           .get();
     if (worst <= 1.0) return;
     if (attempt == 20) {
       std::ostringstream m;
@@ -172,21 +176,37 @@ void update_pressure(simulation<D>& s) {
                                                      f::sound_speed(p), f::pressure_term(p), f::balsara(p));
 }
 
-/// Accelerations and du/dt; the next time step (global minimum) becomes s.next_time_step.
+/// Accelerations and du/dt (with self-gravity: plus the grad-h gravity term and the tree's
+/// acceleration of update_gravity, gravity.hh); the next time step (global minimum) becomes
+/// s.next_time_step.
 template<int D>
 void update_forces(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
+  const auto fields_read = std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
+                                           f::density(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p),
+                                           f::internal_energy(p), f::balsara(p));
+  const auto fields_written = std::make_tuple(f::kind(p), f::acceleration(p), f::internal_energy_rate(p));
+  const double none = std::numeric_limits<double>::max();
+  if (s.physics.gravity.enabled) {
+    s.next_time_step = std::apply(
+      [&](auto... field) {
+        auto interior = flecsi_lite::execute<compute_forces_with_gravity<D, flecsi_lite::na>>(s.neighbours, s.physics,
+                                                                                              none, field...);
+        return flecsi_lite::reduce<compute_forces_with_gravity<D, flecsi_lite::ro>, flecsi_lite::reduction::min>(
+          s.neighbours, s.physics, interior, field...);
+      },
+      std::tuple_cat(fields_read, std::make_tuple(f::zeta_over_omega(p), f::gravity_acceleration(p)), fields_written));
+    return;
+  }
   s.next_time_step = std::apply(
     [&](auto... field) {
-      auto interior = flecsi_lite::execute<compute_forces<D, flecsi_lite::na>>(
-        s.neighbours, s.physics, std::numeric_limits<double>::max(), field...);
+      auto interior =
+        flecsi_lite::execute<compute_forces<D, flecsi_lite::na>>(s.neighbours, s.physics, none, field...);
       return flecsi_lite::reduce<compute_forces<D, flecsi_lite::ro>, flecsi_lite::reduction::min>(
         s.neighbours, s.physics, interior, field...);
     },
-    std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
-                    f::pressure(p), f::sound_speed(p), f::pressure_term(p), f::internal_energy(p), f::balsara(p),
-                    f::kind(p), f::acceleration(p), f::internal_energy_rate(p)));
+    std::tuple_cat(fields_read, fields_written));
 }
 
 template<int D>

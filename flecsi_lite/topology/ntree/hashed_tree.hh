@@ -6,6 +6,7 @@
 #include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/multipole.hh"
+#include "flecsi_lite/topology/ntree/detail/node_moments.hh"
 #include "flecsi_lite/topology/ntree/detail/node_table.hh"
 #include "flecsi_lite/topology/ntree/detail/search_node.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
@@ -59,6 +60,16 @@ public:
   /// `x`, `m`, `h` their positions, masses and smoothing lengths.
   void build(const key_type* keys, const point<D>* x, const double* m, const double* h,
              std::size_t n, const tree_options& options = {}) {
+    const std::size_t bucket = options.bucket_size;
+    build(keys, x, m, h, n, options, [bucket](const tree_node<D>& node) { return node.size() > bucket; });
+  }
+
+  /// The same with the split decision given: a node (below the deepest level) is split when
+  /// `split(node)` is true, called with its key, level and range here. The distributed gravity
+  /// tree decides so by the global count of a node whose particles straddle ranks.
+  template<class SplitRule>
+  void build(const key_type* keys, const point<D>* x, const double* m, const double* h,
+             std::size_t n, const tree_options& options, const SplitRule& split) {
     assert(options.bucket_size >= 1);
     assert(n < npos);
 #ifndef NDEBUG
@@ -73,7 +84,7 @@ public:
     nodes_.push_back(root);
     for (std::size_t first = 0, last = 1; first < last;) {
       level_begin_.push_back(static_cast<std::uint32_t>(last));
-      const std::size_t added = split_level(keys, first, last);
+      const std::size_t added = split_level(keys, first, last, split);
       first = last;
       last += added;
     }
@@ -143,7 +154,8 @@ private:
   std::size_t level_size(int l) const { return level_begin_[l + 1] - level_begin_[l]; }
 
   // Splits the nodes [first, last) (one level) and appends their children; returns how many.
-  std::size_t split_level(const key_type* keys, std::size_t first, std::size_t last) {
+  template<class SplitRule>
+  std::size_t split_level(const key_type* keys, std::size_t first, std::size_t last, const SplitRule& split) {
     constexpr unsigned children = children_per_cell<D>;
     const std::size_t count = last - first;
     child_begin_.resize(count * (children + 1));
@@ -152,7 +164,7 @@ private:
       const tree_node<D>& parent = nodes_[first + i];
       std::uint32_t* bound = child_begin_.data() + i * (children + 1);
       std::uint32_t nonempty = 0;
-      if (parent.size() > options_.bucket_size && parent.level < max_level<D>) {
+      if (parent.level < max_level<D> && split(parent)) {
         // Particles of child c are those whose key has child(parent.key, c) as prefix; sorted
         // keys make each such range contiguous, found by binary search on the shifted prefix.
         const int below = D * (max_level<D> - parent.level - 1);
@@ -192,33 +204,15 @@ private:
     return added;
   }
 
-  // Bottom-up quantities of one node; its children are already done.
+  // Bottom-up quantities of one node; its children are already done. The sums are the shared
+  // ones of detail/node_moments.hh (the distributed gravity tree computes its top nodes with them).
   void compute_node(std::size_t index) {
     tree_node<D>& node = nodes_[index];
-    node.bounds = box<D>::empty();
-    node.h_max = 0;
-    node.mass = 0;
-    point<D> weighted{};
+    quadrupole<D>* q = quadrupoles_.empty() ? nullptr : &quadrupoles_[index];
     if (node.is_leaf()) {
-      for (std::uint32_t b = node.begin; b < node.end; ++b) {
-        node.bounds.extend(x_[b]);
-        node.h_max = std::max(node.h_max, h_[b]);
-        node.mass += m_[b];
-        for (int k = 0; k < D; ++k) weighted[k] += m_[b] * x_[b][k];
-      }
+      detail::compute_leaf_moments<D>(node, x_, m_, h_, q);
     } else {
-      for (std::uint32_t c = node.first_child; c < node.first_child + node.child_count; ++c) {
-        const tree_node<D>& child_node = nodes_[c];
-        node.bounds.extend(child_node.bounds);
-        node.h_max = std::max(node.h_max, child_node.h_max);
-        node.mass += child_node.mass;
-        for (int k = 0; k < D; ++k) weighted[k] += child_node.mass * child_node.center[k];
-      }
-    }
-    if (node.mass > 0) {
-      for (int k = 0; k < D; ++k) node.center[k] = weighted[k] / node.mass;
-    } else {
-      node.center = node.size() > 0 ? node.bounds.center() : point<D>{};
+      detail::compute_parent_moments<D>(node, nodes_.data(), q ? quadrupoles_.data() : nullptr, q);
     }
     search_node<D>& compact = search_nodes_[index];
     for (int k = 0; k < D; ++k) {
@@ -230,21 +224,6 @@ private:
     compact.end = node.end;
     compact.first_child = node.first_child;
     compact.child_count = node.child_count;
-    if (quadrupoles_.empty()) return;
-
-    // The moments about the centre of mass: offsets of the particles (leaf) or of the children's
-    // centres (parallel-axis shift), positions viewed as Eigen vectors in place.
-    quadrupole<D>& q = quadrupoles_[index];
-    q.setZero();
-    const auto center = as_column_vector<D>(node.center);
-    if (node.is_leaf()) {
-      for (std::uint32_t b = node.begin; b < node.end; ++b)
-        add_point_mass<D>(q, m_[b], as_column_vector<D>(x_[b]) - center);
-    } else {
-      for (std::uint32_t c = node.first_child; c < node.first_child + node.child_count; ++c)
-        add_shifted<D>(q, quadrupoles_[c], nodes_[c].mass,
-                       as_column_vector<D>(nodes_[c].center) - center);
-    }
   }
 
   tree_options options_;

@@ -87,4 +87,22 @@ inline point<D> multipole_acceleration(double m, const point<D>& center, const q
   return a;
 }
 
+/// Both at once (the tree walk's inner loop): writes multipole_acceleration to `acceleration`
+/// and returns multipole_potential, bit for bit, sharing r, 1/r and Q r. Precondition:
+/// x != center.
+template<int D>
+inline double multipole_field(double m, const point<D>& center, const quadrupole<D>& q,
+                              const point<D>& x, point<D>& acceleration) {
+  const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(center);
+  const column_vector<D> qr = q * r;
+  const double rqr = r.dot(qr);
+  const double inverse_r = 1 / r.norm();
+  const double inverse_r2 = inverse_r * inverse_r;
+  const double inverse_r3 = inverse_r2 * inverse_r;
+  const double inverse_r5 = inverse_r3 * inverse_r2;
+  as_column_vector<D>(acceleration) =
+    (-m * inverse_r3 - 2.5 * rqr * inverse_r5 * inverse_r2) * r + inverse_r5 * qr;
+  return -m * inverse_r - 0.5 * rqr * inverse_r2 * inverse_r2 * inverse_r;
+}
+
 } // namespace flecsi_lite::topology::ntree
