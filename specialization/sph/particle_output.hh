@@ -16,14 +16,14 @@ namespace flecsph::sph {
 /// before gravity existed.
 template<int D>
 std::vector<flecsi_lite::data::registered_field> files_fields(const simulation<D>& s) {
+  // A field's index in the registry is its id: the gravity fields stay, without roles.
   auto all = flecsi_lite::data::registered_fields<particle_tree<D>>();
   if (s.physics.gravity.enabled) return all;
   using f = fields<D>;
-  std::vector<flecsi_lite::data::registered_field> kept;
   for (auto& field : all)
-    if (field.name != f::gravitational_potential.name() && field.name != f::zeta_over_omega.name())
-      kept.push_back(std::move(field));
-  return kept;
+    if (field.name == f::gravitational_potential.name() || field.name == f::zeta_over_omega.name())
+      field.persistence = flecsi_lite::data::persistence();
+  return all;
 }
 
 /// Collective: writes every owned particle's output fields into the open step of `out` (today

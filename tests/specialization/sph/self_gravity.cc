@@ -5,10 +5,15 @@
 // (the softened pairs and the grad-h term are antisymmetric; reached 4e-18 of sum |m v|);
 // E = K + U + W changes by 2.3e-4 in 12 steps (to t = 0.61, about half the free-fall time) at
 // theta 0.5; the grad-h gravity term (Price & Monaghan 2007) keeps E ten times better than
-// without it (2.2e-3).
+// without it (2.2e-3); the relative criterion ends bitwise the same on every rank count too; the
+// acceleration time-step criterion sees the gravitational acceleration; a restart (phi and zeta
+// in the checkpoint) ends bitwise where the run it continues ends.
 #include "sph_setup.hh"
 
 #include "specialization/sph/gravity.hh"
+#include "specialization/sph/restart.hh"
+
+#include "flecsi_lite/io.hh"
 
 #include <catch2/catch.hpp>
 
@@ -19,7 +24,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,10 +35,14 @@ using namespace sph_test;
 constexpr int D = 3;
 using f = sph::fields<D>;
 
-struct sphere_run : sph::simulation<D> {};
+struct sphere_run : sph::simulation<D> {
+  double u0 = 0.05;
+  std::string restart_from, checkpoint;
+  long checkpoint_step = -1;
+};
 
 constexpr int cells = 16;  ///< lattice cells across the diameter
-constexpr double radius = 1.0, u0 = 0.05;
+constexpr double radius = 1.0;
 
 std::size_t sphere_count() {
   std::size_t n = 0;
@@ -62,13 +73,16 @@ void create_sphere(sphere_run& s) {
     p.id = i;
     p.m = 1.0 / double(n);
     p.h = s.physics.eta * dx;
-    p.u = u0;
+    p.u = s.u0;
     p.kind = sph::particle_kind::fluid;
   });
 }
 
-/// Runs the sphere for `steps` steps with the given gravity settings.
-void run_sphere(sphere_run& s, double theta, bool grad_h, long steps) {
+/// Runs the sphere for `steps` steps with the given gravity settings (from the checkpoint
+/// s.restart_from when set, writing s.checkpoint after step s.checkpoint_step when set).
+void run_sphere(sphere_run& s, double theta, bool grad_h, long steps,
+                sph::gravity_criterion criterion = sph::gravity_criterion::geometric) {
+  s.physics.gravity.criterion = criterion;
   s.physics.eos.ideal.gamma = 5.0 / 3.0;
   s.physics.conductivity = 0;
   s.physics.gravity.enabled = true;
@@ -80,7 +94,13 @@ void run_sphere(sphere_run& s, double theta, bool grad_h, long steps) {
   s.run.diagnostics_every = 0;
   auto m = sph::make_control_model<sphere_run>();
   sph::place_gravity(m);
-  m.action("initial_data", "sphere", create_sphere);
+  m.action("initial_data", "sphere", [](sphere_run& state) {
+    if (state.restart_from.empty()) create_sphere(state);
+    else sph::read_restart_checkpoint(state, state.restart_from);
+  });
+  m.action("output", "checkpoint", [](sphere_run& state) {
+    if (state.step == state.checkpoint_step) sph::write_restart_checkpoint(state, state.checkpoint, {});
+  });
   m.run(s);
 }
 
@@ -122,6 +142,20 @@ std::vector<double> gather_state(sphere_run& s) {
   return sorted;
 }
 
+/// The final state in hexadecimal floats, a particle per line by id: <stem>.<ranks>.txt, which
+/// mpi.sph_self_gravity.compare compares between rank counts.
+void write_state(sphere_run& s, const std::string& stem) {
+  const auto state = gather_state(s);
+  if (flecsi_lite::runtime::rank() != 0) return;
+  std::ofstream out(stem + "." + std::to_string(flecsi_lite::runtime::size()) + ".txt");
+  char field[32];
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    std::snprintf(field, sizeof field, "%a", state[i]);
+    out << field << ((i + 1) % columns == 0 ? "\n" : " ");
+  }
+  REQUIRE(out.good());
+}
+
 double relative_energy_change(const sphere_run& s) {
   return std::fabs(s.totals.total - s.initial_totals.total) / std::fabs(s.initial_totals.total);
 }
@@ -139,16 +173,18 @@ TEST_CASE("a self-gravitating sphere ends bitwise the same on any rank count", "
   const double change = relative_energy_change(s);
   INFO("relative change of E = K + U + W after 12 steps at theta 0.5: " << change);
   CHECK(change < 1e-3);  // reached 2.3e-4
-  const auto state = gather_state(s);
-  if (flecsi_lite::runtime::rank() != 0) return;
-  const std::string path = "self_gravity_state." + std::to_string(flecsi_lite::runtime::size()) + ".txt";
-  std::ofstream out(path);
-  char field[32];
-  for (std::size_t i = 0; i < state.size(); ++i) {
-    std::snprintf(field, sizeof field, "%a", state[i]);
-    out << field << ((i + 1) % columns == 0 ? "\n" : " ");
-  }
-  REQUIRE(out.good());
+  write_state(s, "self_gravity_state");
+}
+
+TEST_CASE("with the relative opening criterion too", "[sph][gravity]") {
+  sphere_run s;
+  run_sphere(s, 0.5, true, 6, sph::gravity_criterion::relative);
+  REQUIRE(s.step == 6);
+  CHECK(s.totals.potential < s.initial_totals.potential);
+  const double change = relative_energy_change(s);
+  INFO("relative change of E after 6 steps, relative criterion: " << change);
+  CHECK(change < 1e-3);
+  write_state(s, "self_gravity_relative");
 }
 
 TEST_CASE("at theta = 0 a self-gravitating sphere conserves momentum to round-off", "[sph][gravity]") {
@@ -181,4 +217,54 @@ TEST_CASE("the grad-h gravity term improves the conservation of energy", "[sph][
   const double kept = relative_energy_change(with), lost = relative_energy_change(without);
   INFO("relative change of E after 12 steps: with the grad-h term " << kept << ", without " << lost);
   CHECK(lost > 5 * kept);  // reached 2.3e-4 with it, 2.2e-3 (ten times more) without
+}
+
+TEST_CASE("the acceleration criterion of the time step sees gravity", "[sph][gravity]") {
+  // A nearly cold sphere: the Courant step is long, pressure forces negligible, so gravity alone
+  // limits dt = acceleration_factor sqrt(h / |a|) (a: the force pass's total acceleration).
+  sphere_run s;
+  s.u0 = 1e-8;
+  run_sphere(s, 0.5, true, 2);
+  REQUIRE(s.step == 2);
+  auto& p = *s.particles;
+  const auto h = flecsi_lite::host_view(f::smoothing_length()(p));
+  const auto a = flecsi_lite::host_view(f::acceleration(p));
+  const auto g = flecsi_lite::host_view(f::gravity_acceleration(p));
+  const auto c = flecsi_lite::host_view(f::sound_speed(p));
+  double bound = std::numeric_limits<double>::max(), courant = bound;
+  for (std::size_t i = 0; i < p.owned_size(); ++i) {
+    double a2 = 0, g2 = 0;
+    for (int k = 0; k < D; ++k) a2 += a(i)[k] * a(i)[k], g2 += g(i)[k] * g(i)[k];
+    CHECK(std::sqrt(a2) == Approx(std::sqrt(g2)).epsilon(0.05));  // gravity dominates
+    bound = std::min(bound, s.physics.acceleration_factor * std::sqrt(h(i) / std::sqrt(a2)));
+    courant = std::min(courant, s.physics.courant * h(i) / (2 * c(i)));
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &bound, 1, MPI_DOUBLE, MPI_MIN, flecsi_lite::runtime::communicator());
+  MPI_Allreduce(MPI_IN_PLACE, &courant, 1, MPI_DOUBLE, MPI_MIN, flecsi_lite::runtime::communicator());
+  INFO("acceleration bound " << bound << ", Courant bound " << courant << ", dt " << s.dt);
+  CHECK(bound < 0.1 * courant);  // reached 0.1 against 5.5
+  CHECK(s.dt == bound);  // the step max_steps stopped before: the next one
+}
+
+TEST_CASE("a self-gravitating run restarted from a checkpoint ends bitwise where it would have", "[sph][gravity]") {
+  const std::string checkpoint = "self_gravity_checkpoint_" + std::to_string(flecsi_lite::runtime::size()) + ".h5part";
+  sphere_run writing;
+  writing.checkpoint = checkpoint;
+  writing.checkpoint_step = 4;
+  run_sphere(writing, 0.5, true, 8, sph::gravity_criterion::relative);
+  {
+    const flecsi_lite::io::h5part_reader saved(checkpoint);
+    CHECK(saved.has_dataset(0, "phi"));
+    CHECK(saved.has_dataset(0, "zeta_over_omega"));
+  }
+  sphere_run continuing;
+  continuing.restart_from = checkpoint;
+  run_sphere(continuing, 0.5, true, 8, sph::gravity_criterion::relative);
+  REQUIRE(continuing.step == 8);
+  CHECK(continuing.initial_totals.potential == writing.initial_totals.potential);
+  CHECK(continuing.totals.total == writing.totals.total);
+  CHECK(continuing.totals.potential == writing.totals.potential);
+  const auto a = gather_state(writing), b = gather_state(continuing);
+  REQUIRE(a.size() == b.size());
+  CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
 }
