@@ -366,6 +366,36 @@ TEST_CASE("relative criterion: accepted nodes pass eq. 18 and the guard", "[ntre
   REQUIRE(accepted > 0);
 }
 
+TEST_CASE("the walk is its sequential definition, whatever the threads and group order",
+          "[ntree][gravity]") {
+  const reference_set& r = reference("plummer");
+  const auto sources = nt::gravity_sources_of(r.f.tree);
+  const nt::gravity_options options;
+  const field parallel = walk(r.f, options, spline_pair{});
+  auto reversed = r.f.groups;
+  std::reverse(reversed.begin(), reversed.end());
+  const field backwards = walk(r.f, options, spline_pair{}, &reversed);
+  REQUIRE(backwards.a == parallel.a);
+  REQUIRE(backwards.phi == parallel.phi);
+  // One thread, group by group: one list per group, then each target over it in order.
+  nt::detail::gravity_list<3> list;
+  std::uint64_t nodes = 0, particles = 0;
+  for (const auto& group : r.f.groups) {
+    nt::detail::build_gravity_list<3>(sources, group, options, sources.quadrupoles, list);
+    nodes += (group.end - group.begin) * list.nodes.size();
+    particles += (group.end - group.begin) * list.particles();
+    for (std::uint32_t i = group.begin; i < group.end; ++i) {
+      nt::point<3> a;
+      double phi;
+      nt::detail::sum_gravity_list<3>(list, r.f.set.x[i], r.f.set.h[i], spline_pair{}, a, phi);
+      REQUIRE(a == parallel.a[i]);
+      REQUIRE(phi == parallel.phi[i]);
+    }
+  }
+  REQUIRE(parallel.counts.node_interactions == nodes);
+  REQUIRE(parallel.counts.particle_interactions == particles);
+}
+
 TEST_CASE("multipole_field is multipole_potential and multipole_acceleration at once",
           "[ntree][gravity]") {
   const reference_set& r = reference("evrard");
