@@ -133,10 +133,12 @@ struct essential_sources {
   std::vector<point<D>> x;
   std::vector<double> m, h;
   std::size_t imported_nodes = 0, imported_particles = 0;
+  std::size_t sent_groups = 0;  ///< group records this rank sent (one per group and rank it needs)
 };
 
-/// Collective: sends this rank's group records to all ranks; for every other rank s walks s's
-/// groups over the top tree and its own subtrees with gravity_accepts, and returns to s the
+/// Collective: sends each group's record to the ranks owning a subtree root that its walk over
+/// the top tree opens; walks each other rank s's groups so received over the top tree and its own
+/// subtrees with gravity_accepts, and returns to s the
 /// nodes below its subtree roots that s's walks reach (children of every opened node, with
 /// their moments) and the particles of the leaves they open; assembles the top tree, the local
 /// tree and the imports into `out` (owned particles first, the local tree's ranges kept).

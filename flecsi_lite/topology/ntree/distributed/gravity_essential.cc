@@ -8,6 +8,7 @@
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/ntree/detail/gravity_opening.hh"
 
+#include <algorithm>
 #include <atomic>
 #include <climits>
 #include <cstring>
@@ -155,6 +156,34 @@ int checked_int(std::size_t value) {
   return static_cast<int>(value);
 }
 
+// Collective: sends outgoing[r] to every rank r (one MPI_Alltoall of counts, one MPI_Alltoallv
+// of bytes); returns what came, source rank after source rank, `counts` records from each.
+template<class T>
+std::vector<T> exchange_records(const std::vector<std::vector<T>>& outgoing, MPI_Comm comm, std::vector<int>& counts) {
+  const int size = static_cast<int>(outgoing.size());
+  std::vector<int> send_bytes(size), send_offsets(size), receive_bytes(size), receive_offsets(size);
+  std::vector<std::byte> send;
+  for (int r = 0; r < size; ++r) {
+    send_offsets[r] = checked_int(send.size());
+    append_bytes(send, outgoing[r].data(), outgoing[r].size());
+    send_bytes[r] = checked_int(send.size()) - send_offsets[r];
+  }
+  runtime::check_mpi(MPI_Alltoall(send_bytes.data(), 1, MPI_INT, receive_bytes.data(), 1, MPI_INT, comm),
+                     "ntree gravity tree: group counts");
+  std::size_t total = 0;
+  counts.resize(size);
+  for (int r = 0; r < size; ++r) {
+    receive_offsets[r] = checked_int(total);
+    total += static_cast<std::size_t>(receive_bytes[r]);
+    counts[r] = receive_bytes[r] / static_cast<int>(sizeof(T));
+  }
+  std::vector<T> received(total / sizeof(T));
+  runtime::check_mpi(MPI_Alltoallv(send.data(), send_bytes.data(), send_offsets.data(), MPI_BYTE, received.data(),
+                                   receive_bytes.data(), receive_offsets.data(), MPI_BYTE, comm),
+                     "ntree gravity tree: groups");
+  return received;
+}
+
 } // namespace
 
 template<int D>
@@ -164,11 +193,34 @@ void assemble_essential_tree(const top_tree<D>& top, const hashed_tree<D>& local
   int size = 1;
   MPI_Comm_size(comm, &size);
   const bool with_quadrupoles = options.quadrupole;
-  std::vector<group_record<D>> mine(groups.size());
+  // Each group goes only to the ranks owning a subtree root that its walk over the top tree
+  // (the same on every rank) reaches and opens: no other rank has anything it needs.
+  std::vector<std::vector<int>> needed_by(groups.size());
+  flecsi_lite::forall(groups.size(), [&](std::size_t g) {
+    const group_record<D> group{groups[g].bounds, groups[g].h_max, groups[g].acceleration_min};
+    thread_local std::vector<std::uint32_t> stack;
+    stack.assign(top.nodes.empty() ? 0 : 1, 0);
+    while (!stack.empty()) {
+      const std::uint32_t t = stack.back();
+      stack.pop_back();
+      const tree_node<D>& node = top.nodes[t];
+      if (node.size() == 0 || gravity_accepts<D>(node, group, options)) continue;
+      if (top.owner[t] == -1) {
+        for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) stack.push_back(c);
+      } else if (top.owner[t] != rank) {
+        needed_by[g].push_back(top.owner[t]);
+      }
+    }
+    std::sort(needed_by[g].begin(), needed_by[g].end());
+    needed_by[g].erase(std::unique(needed_by[g].begin(), needed_by[g].end()), needed_by[g].end());
+  }, "ntree::gravity_tree::group_destinations", flecsi_lite::dynamic_schedule{});
+  std::vector<std::vector<group_record<D>>> outgoing(size);
   for (std::size_t g = 0; g < groups.size(); ++g)
-    mine[g] = {groups[g].bounds, groups[g].h_max, groups[g].acceleration_min};
+    for (const int r : needed_by[g]) outgoing[r].push_back({groups[g].bounds, groups[g].h_max, groups[g].acceleration_min});
   std::vector<int> group_counts;
-  const auto all_groups = allgather_records(mine, comm, &group_counts);
+  const auto all_groups = exchange_records(outgoing, comm, group_counts);
+  out.sent_groups = 0;
+  for (const auto& list : outgoing) out.sent_groups += list.size();
 
   // Replies: for every other rank, what its groups' walks reach in this rank's subtrees.
   std::vector<std::uint32_t> roots;
@@ -206,7 +258,9 @@ void assemble_essential_tree(const top_tree<D>& top, const hashed_tree<D>& local
   // The source tree: the top tree (straddling leaves' particles after the owned ones), this
   // rank's local tree below its subtree roots, then the imports below the others'.
   const std::size_t owned = local.size();
+  const std::size_t sent_groups = out.sent_groups;
   out = essential_sources<D>{};
+  out.sent_groups = sent_groups;
   out.nodes = top.nodes;
   if (with_quadrupoles) out.quadrupoles = top.quadrupoles;
   out.x.assign(local.positions(), local.positions() + owned);

@@ -317,8 +317,9 @@ std::vector<target_group<D>> essential_groups(const top_tree<D>& top, const hash
     } else if (top.owner[t] == -1) {
       if (!is_group(node)) {
         for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) top_stack.push_back(c);
-      } else if (top.local[t] != hashed_tree<D>::npos) {
-        // A group node straddling ranks: every rank's share walks with the node's global data.
+      } else if (top.local[t] != hashed_tree<D>::npos && local.node(top.local[t]).size() > 0) {
+        // A group node straddling ranks: every rank's share walks with the node's global data
+        // (an empty rank's local tree has an empty root, which is no share).
         const tree_node<D>& here = local.node(top.local[t]);
         target_group<D> group;
         group.bounds = node.bounds;
@@ -339,8 +340,6 @@ std::vector<target_group<D>> essential_groups(const top_tree<D>& top, const hash
   template tree_node<D> from_wire<D>(const wire_node<D>&, quadrupole<D>*);                               \
   template std::vector<wire_node<D>> allgather_records(const std::vector<wire_node<D>>&, MPI_Comm,       \
                                                        std::vector<int>*);                              \
-  template std::vector<group_record<D>> allgather_records(const std::vector<group_record<D>>&, MPI_Comm, \
-                                                          std::vector<int>*);                           \
   template top_tree<D> build_top_tree<D>(const hashed_tree<D>&, const straddling_cells&, bool, int, MPI_Comm); \
   template std::vector<target_group<D>> essential_groups<D>(const top_tree<D>&, const hashed_tree<D>&,   \
                                                             const straddling_cells&, const double*,     \

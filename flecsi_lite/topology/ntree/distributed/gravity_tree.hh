@@ -1,6 +1,6 @@
 // The distributed gravity tree: a locally essential tree per rank (Salmon 1991; Warren & Salmon
 // 1993) on which gravity.hh's walk gives every rank's particles the field of the global tree,
-// bitwise the same for any number of ranks (docs/ntree.md, "Distributed gravity").
+// bitwise the same for any number of ranks (docs/programming-model.md, "Distributed gravity").
 #pragma once
 
 #include "flecsi_lite/topology/ntree/detail/gravity_top_tree.hh"
@@ -48,6 +48,8 @@ public:
   /// included), for the statistics and the benchmark.
   std::size_t imported_nodes() const { return imported_nodes_; }
   std::size_t imported_particles() const { return imported_particles_; }
+  /// Target-group records build sent (one per group and rank whose subtrees its walk opens).
+  std::size_t sent_groups() const { return essential_.sent_groups; }
 
   /// The source tree the walk runs on (on one rank: the local tree).
   gravity_sources<D> sources() const;

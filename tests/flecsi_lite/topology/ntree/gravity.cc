@@ -329,6 +329,73 @@ TEST_CASE("interaction lists partition the sources and satisfy the criteria", "[
   }
 }
 
+TEST_CASE("relative criterion: accepted nodes pass eq. 18 and the guard", "[ntree][gravity]") {
+  const reference_set& r = reference("evrard");
+  std::vector<double> magnitude(r.f.size());
+  for (std::size_t i = 0; i < r.f.size(); ++i)
+    magnitude[i] = nt::as_column_vector<3>(r.exact.a[i]).norm();
+  const auto groups = nt::target_groups<3>(r.f.tree, 32, magnitude.data());
+  const auto sources = nt::gravity_sources_of(r.f.tree);
+  nt::gravity_options options;
+  options.relative_criterion = true;
+  nt::detail::gravity_list<3> list;
+  std::size_t accepted = 0;
+  for (const double alpha : {0.0005, 0.0025, 0.01}) {
+    options.relative_tolerance = alpha;
+    for (std::size_t g = 0; g < groups.size(); g += 29) {
+      const auto& group = groups[g];
+      nt::detail::build_gravity_list<3>(sources, group, options, sources.quadrupoles, list);
+      accepted += list.nodes.size();
+      std::size_t covered = list.particles();
+      for (const std::uint32_t index : list.nodes) {
+        const auto& node = r.f.tree.node(index);
+        covered += node.size();
+        const double side = node.bounds.max_extent();
+        const auto centre = node.bounds.center();
+        for (std::uint32_t i = group.begin; i < group.end; ++i) {
+          const double r2 = nt::distance_squared<3>(r.f.set.x[i], node.center);
+          REQUIRE(node.mass * side * side <= alpha * magnitude[i] * r2 * r2);
+          bool inside = true; // GADGET-2's guard: |x - centre| < 0.6 side on every axis
+          for (int k = 0; k < 3; ++k) inside = inside && std::abs(r.f.set.x[i][k] - centre[k]) < 0.6 * side;
+          REQUIRE_FALSE(inside);
+        }
+      }
+      REQUIRE(covered == r.f.size());
+    }
+  }
+  REQUIRE(accepted > 0);
+}
+
+TEST_CASE("the walk is its sequential definition, whatever the threads and group order",
+          "[ntree][gravity]") {
+  const reference_set& r = reference("plummer");
+  const auto sources = nt::gravity_sources_of(r.f.tree);
+  const nt::gravity_options options;
+  const field parallel = walk(r.f, options, spline_pair{});
+  auto reversed = r.f.groups;
+  std::reverse(reversed.begin(), reversed.end());
+  const field backwards = walk(r.f, options, spline_pair{}, &reversed);
+  REQUIRE(backwards.a == parallel.a);
+  REQUIRE(backwards.phi == parallel.phi);
+  // One thread, group by group: one list per group, then each target over it in order.
+  nt::detail::gravity_list<3> list;
+  std::uint64_t nodes = 0, particles = 0;
+  for (const auto& group : r.f.groups) {
+    nt::detail::build_gravity_list<3>(sources, group, options, sources.quadrupoles, list);
+    nodes += (group.end - group.begin) * list.nodes.size();
+    particles += (group.end - group.begin) * list.particles();
+    for (std::uint32_t i = group.begin; i < group.end; ++i) {
+      nt::point<3> a;
+      double phi;
+      nt::detail::sum_gravity_list<3>(list, r.f.set.x[i], r.f.set.h[i], spline_pair{}, a, phi);
+      REQUIRE(a == parallel.a[i]);
+      REQUIRE(phi == parallel.phi[i]);
+    }
+  }
+  REQUIRE(parallel.counts.node_interactions == nodes);
+  REQUIRE(parallel.counts.particle_interactions == particles);
+}
+
 TEST_CASE("multipole_field is multipole_potential and multipole_acceleration at once",
           "[ntree][gravity]") {
   const reference_set& r = reference("evrard");

@@ -8,6 +8,7 @@
 #include "flecsi_lite/topology/ntree.hh"
 #include "flecsi_lite/topology/ntree/reference/direct_gravity.hh"
 #include "tests/flecsi_lite/topology/ntree/gravity_sets.hh"
+#include "tests/flecsi_lite/topology/ntree/harness.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"
 
 #include <mpi.h>
@@ -70,7 +71,7 @@ template<int D>
 struct field_result {
   std::vector<nt::point<D>> a;
   std::vector<double> phi;
-  std::size_t imported_nodes = 0, imported_particles = 0, top_nodes = 0;
+  std::size_t imported_nodes = 0, imported_particles = 0, top_nodes = 0, sent_groups = 0, groups = 0;
 };
 
 /// The gravity tree over particles [first, last) of the sorted set on `comm`, evaluated.
@@ -88,6 +89,8 @@ field_result<D> run(const particle_set<D>& set, std::size_t first, std::size_t l
   result.imported_nodes = tree.imported_nodes();
   result.imported_particles = tree.imported_particles();
   result.top_nodes = tree.top_nodes();
+  result.sent_groups = tree.sent_groups();
+  result.groups = tree.groups().size();
   return result;
 }
 
@@ -146,14 +149,18 @@ field_result<D> check_rank_invariance(const particle_set<D>& set, const std::vec
   const auto nodes = gather(std::vector<std::size_t>{mine.imported_nodes});
   const auto particles = gather(std::vector<std::size_t>{mine.imported_particles});
   const auto owned = gather(std::vector<std::size_t>{last - first});
+  const auto groups = gather(std::vector<std::size_t>{mine.groups});
+  const auto sent = gather(std::vector<std::size_t>{mine.sent_groups});
   if (rank() == 0 && ranks() > 1) {
     std::cout << what << ", " << ranks() << " ranks, top tree " << mine.top_nodes << " nodes; per rank (owned / "
-              << "imported nodes / imported particles):";
-    for (int r = 0; r < ranks(); ++r) std::cout << " " << owned[r] << "/" << nodes[r] << "/" << particles[r];
+              << "imported nodes / imported particles / groups / group records sent):";
+    for (int r = 0; r < ranks(); ++r)
+      std::cout << " " << owned[r] << "/" << nodes[r] << "/" << particles[r] << "/" << groups[r] << "/" << sent[r];
     std::cout << "\n";
   }
   // Every non-empty rank needs something from the others.
-  if (ranks() > 1 && last > first) CHECK(mine.imported_nodes + mine.imported_particles > 0);
+  if (ranks() > 1 && last > first && last - first < set.size())
+    CHECK(mine.imported_nodes + mine.imported_particles > 0);
   return one;
 }
 
@@ -286,4 +293,54 @@ TEST_CASE("distributed gravity in 1 and 2 dimensions: bitwise equal on any rank 
   const auto line = with_stack<1>(ntree_test::gaussian_blobs<1>(2000, 2, 0.05, 10), 30);
   check_rank_invariance<1>(line, rank_bounds<1>(line, stack_middle<1>(line)), nullptr, options, near,
                            "1D Gaussian blobs");
+}
+
+TEST_CASE("distributed gravity on particles distributed by the ntree: bitwise equal to one rank") {
+  // The ntree's sample sort decides the split and the keys (its key box and Hilbert order).
+  auto set = ntree_test::plummer(6000, 8);
+  for (std::size_t i = set.size() - 40; i < set.size(); ++i) set.x[i] = set.x[1];
+  nt::ntree<3> particles;
+  ntree_mpi_test::load(particles, set, ntree_mpi_test::start::random_ranks);
+  particles.distribute();
+  using topology = nt::ntree<3>;
+  const auto x = flecsi_lite::host_view(topology::position(particles));
+  const auto m = flecsi_lite::host_view(topology::mass(particles));
+  const auto h = flecsi_lite::host_view(topology::smoothing_length(particles));
+  const auto key = flecsi_lite::host_view(topology::key(particles));
+  const std::size_t n = particles.owned_size();
+  particle_set<3> mine;
+  for (std::size_t i = 0; i < n; ++i) {
+    mine.x.push_back(x(i));
+    mine.m.push_back(m(i));
+    mine.h.push_back(h(i));
+    mine.keys.push_back(key(i));
+  }
+  // All ranks' owned particles in rank order: the global (key, id) order, for the one-rank tree.
+  particle_set<3> all;
+  all.x = gather(mine.x);
+  all.m = gather(mine.m);
+  all.h = gather(mine.h);
+  all.keys = gather(mine.keys);
+  REQUIRE(all.size() == set.size());
+  const ntree_test::spline_pair near;
+  nt::gravity_options options;
+  const field_result<3> here = run<3>(mine, 0, n, nullptr, options, near, world());
+  const field_result<3> one = run<3>(all, 0, all.size(), nullptr, options, near, MPI_COMM_SELF);
+  const auto a = gather(here.a);
+  const auto phi = gather(here.phi);
+  CHECK(std::memcmp(a.data(), one.a.data(), a.size() * sizeof(nt::point<3>)) == 0);
+  CHECK(std::memcmp(phi.data(), one.phi.data(), phi.size() * sizeof(double)) == 0);
+}
+
+TEST_CASE("distributed gravity: all particles on the last rank, and no particles at all") {
+  const auto set = with_stack<3>(ntree_test::plummer(3000, 6), 30);
+  std::vector<std::size_t> bounds(static_cast<std::size_t>(ranks()), 0);
+  bounds.push_back(set.size());
+  const ntree_test::spline_pair near;
+  check_rank_invariance<3>(set, bounds, nullptr, nt::gravity_options{}, near, "all on the last rank");
+
+  nt::gravity_tree<3> none;
+  none.build(nullptr, nullptr, nullptr, nullptr, nullptr, 0, nt::gravity_options{}, world());
+  CHECK(none.groups().empty());
+  CHECK(none.evaluate(near, nullptr, nullptr).node_interactions == 0);
 }
