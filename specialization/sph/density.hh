@@ -53,9 +53,10 @@ void density_sums(const neighbour_walk<D>& walk, std::size_t a, double h, const 
 /// which a's list is complete: above 1, h grew out of the searched reach (h is then the grown
 /// value, rho is not final) and the caller must search again and call this task again.
 template<int D, flecsi_lite::privilege Ghost>
-double compute_density(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+double compute_density(neighbours_ro<D> neighbours_object, physics_settings settings, double earlier,
                        ro_neighbours<vector<D>, Ghost> x, ro_neighbours<double, Ghost> m, ro<particle_kind> kind,
                        rw<double> h, wo<double> rho, wo<double> omega) {
+  const neighbourhood<D>& neighbours = *neighbours_object;
   const neighbour_walk<D> walk(neighbours);
   const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
   const vector<D>* xs = x.data();

@@ -88,13 +88,14 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
 /// pair forces are exactly opposite: momentum is conserved to round-off, energy to the accuracy of
 /// the time integration.
 template<int D, flecsi_lite::privilege Ghost>
-double compute_forces(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+double compute_forces(neighbours_ro<D> neighbours_object, physics_settings settings, double earlier,
                       ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
                       ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> h,
                       ro_neighbours<double, Ghost> rho, ro_neighbours<double, Ghost> P,
                       ro_neighbours<double, Ghost> cs, ro_neighbours<double, Ghost> pressure_term,
                       ro_neighbours<double, Ghost> u, ro_neighbours<double, Ghost> balsara, ro<particle_kind> kind,
                       wo<vector<D>> acceleration, wo<double> du_dt) {
+  const neighbourhood<D>& neighbours = *neighbours_object;
   const neighbour_walk<D> walk(neighbours);
   const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
                                    P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
