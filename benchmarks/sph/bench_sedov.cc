@@ -47,8 +47,9 @@ runtime::parameters load_parameters(const std::string& path, const std::vector<s
 }
 
 /// Owned particles with r_ab < 2 h_a (the kernel's neighbours, itself included).
-double kernel_neighbours(const sph::neighbourhood<D>& neighbours, sph::ro_with_ghosts<sph::vector<D>> x,
+double kernel_neighbours(sph::neighbours_ro<D> neighbours_object, sph::ro_with_ghosts<sph::vector<D>> x,
                          sph::ro<double> h) {
+  const sph::neighbourhood<D>& neighbours = *neighbours_object;
   const sph::neighbour_walk<D> walk(neighbours);
   double count = 0;
   for (std::size_t a = 0; a < neighbours.size(); ++a) {
@@ -125,7 +126,7 @@ void report(bench_state& s) {
   std::printf("  CPU time per step (largest over ranks, all threads of a rank) %.4f s: %.2f cores busy per rank\n",
               cpu / static_cast<double>(s.timed_steps), cpu / seconds);
   std::printf("  neighbours per particle: %.1f within 2 h (kernel), %.1f in the lists (reach %.3g max(h_a, h_b))\n",
-              in_kernel / particles, list_entries / particles, s.neighbours.reach);
+              in_kernel / particles, list_entries / particles, s.neighbours.host().reach);
   std::printf("  bytes per owned particle (largest over ranks): %.0f fields + %.0f neighbour lists = %.0f; "
               "besides, %.0f in the local tree and search workspaces\n",
               field_bytes, list_bytes, field_bytes + list_bytes, tree_bytes);

@@ -1,6 +1,7 @@
 #include "flecsi_lite/data/topology_base.hh"
 
 #include "flecsi_lite/data/layout_listener.hh"
+#include "flecsi_lite/data/tracked.hh"
 
 #include <atomic>
 
@@ -10,10 +11,11 @@ std::atomic<std::uint64_t> next_instance_id{1};
 layout_listener* listener = nullptr;
 } // namespace
 
+std::uint64_t new_instance_id() { return next_instance_id++; }
 void set_layout_listener(layout_listener* l) { listener = l; }
 layout_listener* current_layout_listener() { return listener; }
 
-topology_base::topology_base() : instance_id_(next_instance_id++) {}
+topology_base::topology_base() : instance_id_(new_instance_id()) {}
 
 topology_base::~topology_base() {
   if (listener) listener->topology_destroyed(instance_id_);

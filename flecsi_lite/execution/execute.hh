@@ -2,6 +2,7 @@
 //
 // The task's parameter types say how each argument is passed:
 //   accessor<T, owned, ghost>  <- a field reference: privileges recorded, dependencies derived
+//   tracked<X>::accessor<p>    <- a tracked<X>: its privilege recorded, dependencies derived
 //   T (a value)                <- a future<T>: the task waits for the launch producing it
 //   X& or const X&             <- an lvalue X of a shared_argument type (topologies and the
 //                                 types that opt in, shared_argument.hh): by reference
@@ -11,6 +12,7 @@
 #pragma once
 
 #include "flecsi_lite/data/field.hh"
+#include "flecsi_lite/data/tracked.hh"
 #include "flecsi_lite/execution/executor.hh"
 #include "flecsi_lite/execution/future.hh"
 #include "flecsi_lite/execution/reduction.hh"
@@ -54,6 +56,14 @@ struct is_field_reference : std::false_type {};
 template<class T, class Topo>
 struct is_field_reference<field_reference<T, Topo>> : std::true_type {};
 template<class T>
+struct is_tracked : std::false_type {};
+template<class T>
+struct is_tracked<tracked<T>> : std::true_type {};
+template<class T>
+struct is_tracked_accessor : std::false_type {};
+template<class T, privilege P>
+struct is_tracked_accessor<tracked_accessor<T, P>> : std::true_type {};
+template<class T>
 struct is_accessor : std::false_type {};
 template<class T, privilege O, privilege G>
 struct is_accessor<accessor<T, O, G>> : std::true_type {};
@@ -83,6 +93,7 @@ template<class Param, class Arg>
 struct binder<Param, Arg,
               std::enable_if_t<std::is_lvalue_reference_v<Param> && shared_argument_v<Arg> &&
                                !is_field_reference<std::decay_t<Arg>>::value &&
+                               !is_tracked<std::decay_t<Arg>>::value &&
                                !is_future<std::decay_t<Arg>>::value>> {  // by reference
   static_assert(std::is_lvalue_reference_v<Arg>, "a shared argument is passed as itself, not as a temporary");
   static_assert(std::is_const_v<std::remove_reference_t<Param>> || !std::is_const_v<std::remove_reference_t<Arg>>,
@@ -104,12 +115,32 @@ struct binder<Param, Arg, std::enable_if_t<is_field_reference<std::decay_t<Arg>>
   reference ref;
   explicit binder(Arg&& a) : ref(a) {}
   void collect(collector& c) const {
-    c.accesses.push_back({&ref.topology(), ref.id(), &ref.storage(), accessor_type::owned_privilege,
+    c.accesses.push_back({ref.topology().instance_id(), &ref.topology(), ref.id(), &ref.storage(),
+                          accessor_type::owned_privilege,
                           accessor_type::ghost_privilege});
   }
   accessor_type get() {
     return ref.template make_accessor<accessor_type::owned_privilege, accessor_type::ghost_privilege>();
   }
+};
+
+template<class Param, class Arg>
+struct binder<Param, Arg, std::enable_if_t<is_tracked<std::decay_t<Arg>>::value>> {
+  using object = std::decay_t<Arg>;
+  using accessor_type = std::decay_t<Param>;
+  static_assert(is_tracked_accessor<accessor_type>::value,
+                "a tracked object must be passed to a tracked<T>::accessor<privilege> parameter");
+  static_assert(std::is_same_v<typename accessor_type::value_type, typename object::value_type>,
+                "the accessor's value type differs from the tracked object's");
+  static_assert(std::is_lvalue_reference_v<Arg>, "a tracked object is passed as itself, not as a temporary");
+  static_assert(!writes(accessor_type::object_privilege) || !std::is_const_v<std::remove_reference_t<Arg>>,
+                "a task that writes a tracked object needs it non-const");
+  std::remove_reference_t<Arg>* pointer;
+  explicit binder(Arg&& a) : pointer(&a) {}
+  void collect(collector& c) const {
+    c.accesses.push_back({pointer->instance_id(), nullptr, 0, nullptr, accessor_type::object_privilege, na});
+  }
+  accessor_type get() { return accessor_type(pointer->launch_value()); }
 };
 
 template<class Param, class Arg>

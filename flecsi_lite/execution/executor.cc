@@ -90,7 +90,7 @@ template<class Wanted>
 void executor::record_ghost_copies(const std::vector<field_access>& accesses, Wanted wanted) {
   std::vector<std::vector<const field_access*>> groups;  // stale fields, per topology
   for (const auto& a : accesses) {
-    field_state& state = fields_[{a.topology->instance_id(), a.field}];
+    field_state& state = fields_[{a.instance, a.field}];
     if (state.ghosts_valid || !wanted(a, state)) continue;
     auto group = std::find_if(groups.begin(), groups.end(),
                               [&a](const auto& g) { return g.front()->topology == a.topology; });
@@ -120,13 +120,13 @@ launch_ptr executor::record(std::string name, launch_kind kind,
   // Stale ghosts this launch reads (normally copied eagerly already): one copy per topology.
   record_ghost_copies(accesses, [](const field_access& a, field_state&) { return reads(a.ghost); });
   for (const auto& a : accesses) {
-    field_state& state = fields_[{a.topology->instance_id(), a.field}];
+    field_state& state = fields_[{a.instance, a.field}];
     add_dependencies(*l, state, region::owned, a.owned);
     add_dependencies(*l, state, region::ghost, a.ghost);
   }
   // Update the bookkeeping only after all dependencies are known (a field may appear twice).
   for (const auto& a : accesses) {
-    field_state& state = fields_[{a.topology->instance_id(), a.field}];
+    field_state& state = fields_[{a.instance, a.field}];
     const privilege privileges[2] = {a.owned, a.ghost};
     for (int r = 0; r < 2; ++r) {
       if (privileges[r] == na) continue;

@@ -42,8 +42,10 @@ struct ghost_traffic {
   std::uint64_t messages_received = 0, bytes_received = 0;
 };
 
-/// One field argument of a launch and its privileges per region.
+/// One field argument of a launch and its privileges per region; a tracked object is an access
+/// with no topology and no storage (its privilege is the owned one, its ghost privilege na).
 struct field_access {
+  std::uint64_t instance;  // the topology's or the tracked object's instance_id()
   data::topology_base* topology;
   std::size_t field;
   data::field_storage_base* storage;
@@ -88,6 +90,7 @@ public:
   void before_layout_change(std::uint64_t topology_id) override;
   void after_layout_change(std::uint64_t topology_id) override;
   void topology_destroyed(std::uint64_t topology_id) override;
+  void before_host_access(std::uint64_t) override { wait_all(); }
 
 private:
   executor();

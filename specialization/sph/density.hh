@@ -118,20 +118,20 @@ double density_loop(const neighbourhood<D>& neighbours, const physics_settings& 
 /// which a's list is complete: above 1, h grew out of the searched reach (h is then the grown
 /// value, rho is not final) and the caller must search again and call this task again.
 template<int D, flecsi_lite::privilege Ghost>
-double compute_density(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+double compute_density(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
                        ro_neighbours<vector<D>, Ghost> x, ro_neighbours<double, Ghost> m, ro<particle_kind> kind,
                        rw<double> h, wo<double> rho, wo<double> omega) {
-  return detail::density_loop<D, Ghost>(neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
+  return detail::density_loop<D, Ghost>(*neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
                                         nullptr);
 }
 
 /// The same with self-gravity: also zeta_a / Omega_a for the force pass (detail::gravity_zeta_over_omega).
 template<int D, flecsi_lite::privilege Ghost>
-double compute_density_with_gravity(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+double compute_density_with_gravity(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
                                     ro_neighbours<vector<D>, Ghost> x, ro_neighbours<double, Ghost> m,
                                     ro<particle_kind> kind, rw<double> h, wo<double> rho, wo<double> omega,
                                     wo<double> zeta_over_omega) {
-  return detail::density_loop<D, Ghost>(neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
+  return detail::density_loop<D, Ghost>(*neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
                                         zeta_over_omega.data());
 }
 

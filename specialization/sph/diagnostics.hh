@@ -21,8 +21,8 @@ namespace flecsph::sph {
 
 /// Total length of this rank's neighbour lists (for the mean neighbour count).
 template<int D>
-double neighbour_total(const neighbourhood<D>& neighbours) {
-  return static_cast<double>(neighbours.lists.total());
+double neighbour_total(neighbours_ro<D> neighbours) {
+  return static_cast<double>(neighbours->lists.total());
 }
 
 /// The exact totals now (collective; waits for the launches they depend on).
@@ -114,7 +114,7 @@ memory_use measure_memory(const simulation<D>& s) {
   const double owned = static_cast<double>(std::max<std::size_t>(1, s.particles->owned_size()));
   for (const auto& storage : s.particles->storages())
     if (storage) result.fields += static_cast<double>(storage->element_size() * storage->size());
-  const auto& lists = s.neighbours.lists;  // what is allocated, spare room included
+  const auto& lists = s.neighbours.host().lists;  // what is allocated, spare room included
   result.neighbour_lists = static_cast<double>(lists.offsets.capacity() * sizeof(std::size_t) +
                                                lists.neighbours.capacity() * sizeof(std::uint32_t) +
                                                lists.shifts.capacity() * sizeof(tree::shift_code));

@@ -14,11 +14,12 @@ namespace flecsph::sph {
 /// product form; zero in 1D) of the owned targets of one part (neighbourhood::targets): the
 /// interior ones with Ghost = na, the boundary ones with Ghost = ro.
 template<int D, flecsi_lite::privilege Ghost>
-void compute_velocity_gradients(const neighbourhood<D>& neighbours, physics_settings settings,
+void compute_velocity_gradients(neighbours_ro<D> neighbours_object, physics_settings settings,
                                 ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
                                 ro_neighbours<double, Ghost> m, ro<double> h, ro<double> rho,
                                 ro<double> omega, wo<double> divergence,
                                 wo<double> curl) {
+  const neighbourhood<D>& neighbours = *neighbours_object;
   const neighbour_walk<D> walk(neighbours);
   const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {

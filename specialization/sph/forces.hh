@@ -143,7 +143,7 @@ double force_loop(const neighbourhood<D>& neighbours, const physics_settings& se
 /// pair forces are exactly opposite: momentum is conserved to round-off, energy to the accuracy of
 /// the time integration.
 template<int D, flecsi_lite::privilege Ghost>
-double compute_forces(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+double compute_forces(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
                       ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
                       ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> h,
                       ro_neighbours<double, Ghost> rho, ro_neighbours<double, Ghost> P,
@@ -152,7 +152,7 @@ double compute_forces(const neighbourhood<D>& neighbours, physics_settings setti
                       wo<vector<D>> acceleration, wo<double> du_dt) {
   const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
                                    P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
-  return detail::force_loop<D, Ghost>(neighbours, settings, earlier, in, kind, acceleration, du_dt);
+  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, kind, acceleration, du_dt);
 }
 
 /// The same with self-gravity (Price & Monaghan 2007, sec. 3): dv_a/dt also has
@@ -161,7 +161,7 @@ double compute_forces(const neighbourhood<D>& neighbours, physics_settings setti
 /// (field gravity_acceleration, the pair part softened with phi of the kernel); the time step
 /// sees the sum.
 template<int D, flecsi_lite::privilege Ghost>
-double compute_forces_with_gravity(const neighbourhood<D>& neighbours, physics_settings settings, double earlier,
+double compute_forces_with_gravity(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
                                    ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
                                    ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> h,
                                    ro_neighbours<double, Ghost> rho, ro_neighbours<double, Ghost> P,
@@ -174,7 +174,7 @@ double compute_forces_with_gravity(const neighbourhood<D>& neighbours, physics_s
   if (settings.gravity.grad_h) in.zeta_over_omega = zeta_over_omega.data();
   in.gravity_acceleration = gravity_acceleration.data();
   in.half_G = 0.5 * settings.gravity.constant;
-  return detail::force_loop<D, Ghost>(neighbours, settings, earlier, in, kind, acceleration, du_dt);
+  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, kind, acceleration, du_dt);
 }
 
 } // namespace flecsph::sph

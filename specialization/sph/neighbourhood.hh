@@ -48,6 +48,14 @@ struct neighbourhood {
   double mean_count() const { return size() ? double(lists.total()) / double(size()) : 0.0; }
 };
 
+/// The neighbourhood as tasks share it: the executor orders the search that writes it before the
+/// pair tasks that read it, and those before the next search (no hand-placed wait).
+template<int D>
+using tracked_neighbourhood = flecsi_lite::tracked<neighbourhood<D>>;
+/// The parameter of a task that reads the lists.
+template<int D>
+using neighbours_ro = flecsi_lite::tracked_accessor<neighbourhood<D>, flecsi_lite::ro>;
+
 /// A view of a neighbourhood for the inner loops: raw pointers, separations with images.
 template<int D>
 struct neighbour_walk {
@@ -100,16 +108,25 @@ void split_targets(neighbourhood<D>& n) {
     (needs_ghosts[a] ? n.boundary : n.interior).push_back(static_cast<std::uint32_t>(a));
 }
 
-/// Fills `out` from the tree's search over owned targets (symmetric criterion, reach =
-/// the tree's support). Call after ntree::distribute(), or refresh_local_tree().
+/// The search task: fills `out` from the local tree's search over owned targets (symmetric
+/// criterion, reach `support`). The tree keeps its search workspaces, hence rw.
 template<int D>
-void find_neighbours(particle_tree<D>& p, neighbourhood<D>& out) {
-  p.find_neighbours(out.lists, tree::interaction::symmetric, tree::shift_storage::packed);
-  const auto table = p.space().shift_table();
+void search_neighbours(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
+                       typename tracked_neighbourhood<D>::template accessor<flecsi_lite::wo> out, double support,
+                       tree::domain<D> space) {
+  local->find_neighbours(tree::interaction::symmetric, support, space, out->lists, {}, tree::shift_storage::packed);
+  const auto table = space.shift_table();
   for (std::size_t c = 0; c < table.size(); ++c)
-    for (int k = 0; k < D; ++k) out.shift_table[c][k] = table[c][k];
-  out.reach = p.settings().support;
-  split_targets(out);
+    for (int k = 0; k < D; ++k) out->shift_table[c][k] = table[c][k];
+  out->reach = support;
+  split_targets(*out);
+}
+
+/// Launches the search of `out` on the tree of `p` (after ntree::distribute() or
+/// refresh_local_tree(), which the executor orders before it).
+template<int D>
+void find_neighbours(particle_tree<D>& p, tracked_neighbourhood<D>& out) {
+  flecsi_lite::execute<search_neighbours<D>>(p.local_tree_object(), out, p.settings().support, p.space());
 }
 
 /// Two distinct particles at the same position, the pair with the smallest ids (first < second);
@@ -131,8 +148,9 @@ struct coincident_reduction {
 /// The task: a neighbour at distance 0 that is not the target itself (every such pair is in the
 /// lists of its owned members, so the reduction over ranks finds the same pair on any rank count).
 template<int D>
-coincident_pair find_coincident(const neighbourhood<D>& neighbours, ro_with_ghosts<vector<D>> x,
+coincident_pair find_coincident(neighbours_ro<D> neighbours_object, ro_with_ghosts<vector<D>> x,
                                 ro_with_ghosts<std::uint64_t> id) {
+  const neighbourhood<D>& neighbours = *neighbours_object;
   const neighbour_walk<D> walk(neighbours);
   coincident_pair best;
   vector<D> r;
@@ -150,7 +168,3 @@ coincident_pair find_coincident(const neighbourhood<D>& neighbours, ro_with_ghos
 }
 
 } // namespace flecsph::sph
-
-// The pair tasks read the lists by reference (large; the search waits for pending launches).
-template<int D>
-struct flecsi_lite::execution::shared_argument<flecsph::sph::neighbourhood<D>> : std::true_type {};

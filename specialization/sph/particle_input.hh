@@ -67,7 +67,7 @@ void check_particle_set(simulation<D>& s, const std::string& what) {
       what + " holds a single particle: with adaptive_smoothing_length = true its h = eta (m/rho)^(1/D) has no "
              "solution without neighbours; set adaptive_smoothing_length = false to run it with its h");
   p.distribute();
-  neighbourhood<D> neighbours;
+  tracked_neighbourhood<D> neighbours{"coincidence check lists"};
   find_neighbours(p, neighbours);
   const auto pair =
     flecsi_lite::reduce<find_coincident<D>, coincident_reduction>(neighbours, f::position()(p), f::id()(p)).get();

@@ -99,7 +99,6 @@ void distribute_as_written(simulation<D>& s) {
   swap();
   ++s.distributions;
   p.refresh_local_tree();
-  flecsi_lite::wait_all();
   find_neighbours(p, s.neighbours);
 }
 

@@ -34,7 +34,7 @@ struct simulation {
   tree::ntree_config<D> tree_settings;
 
   std::unique_ptr<particle_tree<D>> particles;
-  neighbourhood<D> neighbours;
+  tracked_neighbourhood<D> neighbours{"sph neighbour lists"};
 
   double time = 0;
   double dt = 0;  ///< the step about to be taken

@@ -109,9 +109,7 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
   } else {
     p.refresh_local_tree();
   }
-  flecsi_lite::wait_all();  // no pending launch may still read the lists replaced here
-  flecsi_lite::timers::scoped timer("sph::neighbour search");
-  find_neighbours(p, s.neighbours);
+  find_neighbours(p, s.neighbours);  // a task: after the refit, and after the last readers of the old lists
 }
 
 /// Density and smoothing length; when some h outgrew the searched reach, searches again with the
@@ -146,7 +144,7 @@ void update_density(simulation<D>& s) {
       m.precision(6);
       m << "sph: the smoothing length still outgrows the neighbour search after 20 searches at step " << s.step
         << " (t = " << s.time << "): h reaches " << worst << " times the searched 2 (1 + search_margin) h, "
-        << "search_margin = " << s.physics.search_margin << " (reach " << s.neighbours.reach
+        << "search_margin = " << s.physics.search_margin << " (reach " << s.neighbours.host().reach
         << " h). Raise search_margin; if h grows without bound, a particle has no neighbours within 2 h (an "
            "isolated particle, or eta = "
         << s.physics.eta << " too small for the particle spacing)";

@@ -5,6 +5,7 @@
 
 #include "flecsi_lite/data/field.hh"
 #include "flecsi_lite/data/topology_base.hh"
+#include "flecsi_lite/data/tracked.hh"
 #include "flecsi_lite/execution/execute.hh"
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/ntree/distributed/distribution_stats.hh"
@@ -111,28 +112,32 @@ public:
   /// Every rank's top branches as shared by the last distribute(), indexed by rank.
   const std::vector<std::vector<branch<D>>>& branches() const { return branches_; }
 
-  /// The tree over owned and ghost particles and its sorted/storage index maps.
-  const local_tree<D>& local() const { return local_; }
-  local_tree<D>& local() { return local_; }
-  const hashed_tree<D>& tree() const { return local_.tree(); }
-  const std::vector<std::size_t>& sorted_to_storage() const { return local_.sorted_to_storage(); }
+  /// The tree over owned and ghost particles and its sorted/storage index maps, outside tasks
+  /// (once the pending tasks, which may refit it, have run).
+  const local_tree<D>& local() const { return local_.host(); }
+  local_tree<D>& local() { return local_.host(); }
+  const hashed_tree<D>& tree() const { return local().tree(); }
+  const std::vector<std::size_t>& sorted_to_storage() const { return local().sorted_to_storage(); }
+  /// The local tree as the executor tracks it, for tasks: pass it to a parameter
+  /// tracked<local_tree<D>>::accessor<ro> (searches that keep workspaces need rw).
+  tracked<local_tree<D>>& local_tree_object() { return local_; }
 
   /// Neighbour lists of the owned particles (storage indices; neighbours in ascending (key, id)
   /// order, so sums over them do not depend on the rank count), reach settings().support, with
   /// the image shift codes stored as `shifts` says.
   void find_neighbours(neighbour_lists& out, interaction kind = interaction::symmetric,
                        shift_storage shifts = shift_storage::separate) {
-    local_.find_neighbours(kind, config_.support, space_, out, {}, shifts);
+    local().find_neighbours(kind, config_.support, space_, out, {}, shifts);
   }
   /// apply(a, b, shift) for every owned a and neighbour b (storage indices), called in parallel
   /// over groups of targets (the calls for one a come from one thread), see local_tree.
   template<class F>
   void for_each_neighbour(F&& apply, interaction kind = interaction::symmetric) {
-    local_.for_each_neighbour(kind, config_.support, space_, std::forward<F>(apply));
+    local().for_each_neighbour(kind, config_.support, space_, std::forward<F>(apply));
   }
   /// Refits the local tree to the current positions, masses and smoothing lengths of the same
   /// particles (owned values changed since distribute()): launches a task reading them with
-  /// ghosts, so stale ghost values are copied first, and waits for it.
+  /// ghosts, so stale ghost values are copied first; tasks using the tree run after it.
   void refresh_local_tree();
 
 private:
@@ -150,7 +155,7 @@ private:
   std::uint64_t global_size_ = 0, first_global_index_ = 0;
   std::size_t exclusive_ = 0;
   std::vector<std::vector<branch<D>>> branches_;
-  local_tree<D> local_;
+  tracked<local_tree<D>> local_{"ntree local tree"};
 };
 
 } // namespace flecsi_lite::topology::ntree

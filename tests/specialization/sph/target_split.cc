@@ -35,7 +35,7 @@ struct split_run : sph::simulation<D> {
 
 TEST_CASE("interior and boundary targets partition the owned particles as the lists say") {
   split_run s;
-  const auto& n = s.neighbours;
+  const auto& n = s.neighbours.host();
   const std::size_t owned = s.particles->owned_size();
   REQUIRE(n.size() == owned);
   REQUIRE(n.interior.size() + n.boundary.size() == owned);
@@ -78,14 +78,14 @@ TEST_CASE("the interior launch reads no ghost and writes no boundary target") {
     x(b).fill(poison);
     m(b) = poison;
   }
-  for (const auto a : s.neighbours.boundary) rho(a) = mark;
-  for (const auto a : s.neighbours.interior) rho(a) = 0;
+  for (const auto a : s.neighbours.host().boundary) rho(a) = mark;
+  for (const auto a : s.neighbours.host().interior) rho(a) = 0;
   const double worst = flecsi_lite::execute<sph::compute_density<D, flecsi_lite::na>>(
                          s.neighbours, s.physics, 0.0, f::position()(p), f::mass()(p), f::kind(p),
                          f::smoothing_length()(p), f::density(p), f::omega(p))
                          .get();
   CHECK(std::isfinite(worst));
   const auto after = flecsi_lite::host_view(f::density(p));
-  for (const auto a : s.neighbours.interior) CHECK(after(a) == rho_before[a]);
-  for (const auto a : s.neighbours.boundary) CHECK(after(a) == mark);
+  for (const auto a : s.neighbours.host().interior) CHECK(after(a) == rho_before[a]);
+  for (const auto a : s.neighbours.host().boundary) CHECK(after(a) == mark);
 }

@@ -8,7 +8,6 @@
 #include "flecsi_lite/topology/ntree/group_walk.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/execution/forall.hh"
-#include "flecsi_lite/execution/shared_argument.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/sfc/ordering.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
@@ -150,7 +149,3 @@ private:
 };
 
 } // namespace flecsi_lite::topology::ntree
-
-// The tree's build and refit tasks write the topology's own tree in place.
-template<int D>
-struct flecsi_lite::execution::shared_argument<flecsi_lite::topology::ntree::local_tree<D>> : std::true_type {};

@@ -27,19 +27,19 @@ namespace detail {
 /// topology's ghosts travel by the executor's copies like every other field's, and stay
 /// current for the tasks that read them next.
 template<int D>
-void build_tree(local_tree<D>& local, const std::vector<std::size_t>& runs, tree_options options,
+void build_tree(typename tracked<local_tree<D>>::template accessor<wo> local, const std::vector<std::size_t>& runs, tree_options options,
                 field<key_type>::accessor<ro, ro> keys, field<std::uint64_t>::accessor<ro, ro> ids,
                 typename field<point<D>>::template accessor<ro, ro> x, field<double>::accessor<ro, ro> m,
                 field<double>::accessor<ro, ro> h) {
-  local.build(keys.data(), ids.data(), x.data(), m.data(), h.data(), x.owned_size(), x.size(), runs, options);
+  local->build(keys.data(), ids.data(), x.data(), m.data(), h.data(), x.owned_size(), x.size(), runs, options);
 }
 
 /// The task of ntree::refresh_local_tree: reading owned and ghost values makes the executor
 /// copy stale ghosts first.
 template<int D>
-void refit(local_tree<D>& local, typename field<point<D>>::template accessor<ro, ro> x,
+void refit(typename tracked<local_tree<D>>::template accessor<rw> local, typename field<point<D>>::template accessor<ro, ro> x,
            field<double>::accessor<ro, ro> m, field<double>::accessor<ro, ro> h) {
-  local.refresh(x.data(), m.data(), h.data());
+  local->refresh(x.data(), m.data(), h.data());
 }
 
 /// Seconds since `start` (which moves to now), also added to the named timer.
@@ -82,7 +82,7 @@ void ntree<D>::resize(std::size_t local_count) {
   values<double>(mass);
   values<double>(smoothing_length);
   values<key_type>(key);
-  local_ = local_tree<D>{};
+  local_.host() = local_tree<D>{};
   branches_.clear();
   exclusive_ = local_count;
   const MPI_Comm comm = runtime::communicator();
@@ -300,7 +300,7 @@ void ntree<D>::build_local_tree() {
 
 template<int D>
 void ntree<D>::refresh_local_tree() {
-  execute<detail::refit<D>>(local_, position(*this), mass(*this), smoothing_length(*this)).wait();
+  execute<detail::refit<D>>(local_, position(*this), mass(*this), smoothing_length(*this));
 }
 
 } // namespace flecsi_lite::topology::ntree

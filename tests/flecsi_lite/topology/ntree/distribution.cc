@@ -50,9 +50,10 @@ void move_particles(typename field<nt::point<D>>::template accessor<rw> x, field
 }
 
 template<int D>
-void neighbour_counts_as_weights(nt::ntree<D>& tree, field<double>::accessor<wo> weight) {
+void neighbour_counts_as_weights(typename flecsi_lite::tracked<nt::local_tree<D>>::template accessor<rw> local,
+                                 double support, nt::domain<D> space, field<double>::accessor<wo> weight) {
   nt::neighbour_lists lists;
-  tree.find_neighbours(lists);
+  local->find_neighbours(nt::interaction::symmetric, support, space, lists);
   for (std::size_t a = 0; a < weight.size(); ++a) weight(a) = static_cast<double>(lists.count(a));
 }
 
@@ -280,7 +281,9 @@ TEST_CASE("balancing by work evens the summed weights") {
   load(tree, set, start::rank_zero);
   const auto by_count = tree.distribute();
   CHECK(by_count.owned_max <= 2000.0 / size() + 1);
-  flecsi_lite::execute<neighbour_counts_as_weights<3>>(tree, user_fields<3>::weight(tree)).wait();
+  flecsi_lite::execute<neighbour_counts_as_weights<3>>(tree.local_tree_object(), tree.settings().support, tree.space(),
+                                                       user_fields<3>::weight(tree))
+    .wait();
   double local_max = 0;
   {
     const auto w = flecsi_lite::host_view(user_fields<3>::weight(tree));
