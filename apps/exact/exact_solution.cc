@@ -60,16 +60,21 @@ options command_line() {
   return parser;
 }
 
-double number(const options& parser, const std::string& name) {
-  const std::string text = parser.get(name);
+/// Whether all of `text` is one finite number, stored in `value`.
+bool parse_finite(const std::string& text, double& value) {
   std::size_t used = 0;
-  double value = 0.0;
   try {
     value = std::stod(text, &used);
   } catch (const std::exception&) {
-    used = 0;
+    return false;
   }
-  if (text.empty() || used != text.size() || !std::isfinite(value))
+  return used == text.size() && std::isfinite(value);
+}
+
+double number(const options& parser, const std::string& name) {
+  const std::string text = parser.get(name);
+  double value = 0.0;
+  if (!parse_finite(text, value))
     throw options_error("--" + name + " needs a finite number, not '" + text + "'");
   return value;
 }
@@ -119,14 +124,8 @@ void write_sod(const options& parser, std::ostream& out) {
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     for (std::string line; std::getline(file, line);) {
       if (line.empty()) continue;
-      std::size_t used = 0;
       double x = 0;
-      try {
-        x = std::stod(line, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != line.size() || !std::isfinite(x))
+      if (!parse_finite(line, x))
         throw options_error("--x-file '" + parser.get("x-file") + "': '" + line + "' is not a finite number");
       write(x);
     }
