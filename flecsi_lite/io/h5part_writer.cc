@@ -30,6 +30,18 @@ std::string fingerprint(const std::string& name, const attribute_value& value) {
   if (auto* d = std::get_if<double>(&value)) std::snprintf(real, sizeof real, "%a", *d);
   return name + '\0' + std::to_string(value.index()) + '\0' + (*real ? real : to_string(value));
 }
+
+// A failed data write or flush is a storage failure: afterwards the file is only emptied and
+// closed (see abandon()).
+void raise_marking_storage_failure(MPI_Comm comm, const std::optional<failure_record>& failed,
+                                   bool& storage_failed) {
+  try {
+    raise_if_any(comm, failed);
+  } catch (...) {
+    storage_failed = true;
+    throw;
+  }
+}
 } // namespace
 
 h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
@@ -110,21 +122,29 @@ void h5part_writer::abandon() noexcept {
   if (!is_open()) return;
   try {
     hdf5_quiet_scope quiet;
-    if (in_step()) {
-      // An unfinished step would look complete to a reader: unlink it.
-      step_group_.close();
-      H5Ldelete(file_.get(), h5part::step_group_name(steps_written_).c_str(), H5P_DEFAULT);
-    }
     // A failed H5Fclose leaves HDF5 a half-closed file that crashes its clean-up in MPI_Finalize,
-    // so the close must not fail: when the metadata cannot be flushed (a full disk), the partial
-    // file is emptied first (every rank agrees, it has no complete content to keep), which gives
+    // so the close must not fail. After a failed write or flush (a full disk) it must not even be
+    // tried as it is: parallel HDF5 (1.10) then fails its metadata flush on the writing rank only,
+    // skips the sync point's broadcast there and leaves the other ranks waiting in it for ever. So
+    // the partial file, which cannot be completed, is emptied first (every rank agrees), which gives
     // back the space the close needs, and removed afterwards. (libhdf5 1.10 may still print
     // "infinite loop closing library" at exit: blocks its failed flush leaked; the exit is clean.)
-    int flushed = H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0;
-    MPI_Allreduce(MPI_IN_PLACE, &flushed, 1, MPI_INT, MPI_MIN, comm_);
+    int flushed = 0;
+    if (!storage_failed_) {
+      if (in_step()) {
+        // An unfinished step would look complete to a reader: unlink it.
+        step_group_.close();
+        H5Ldelete(file_.get(), h5part::step_group_name(steps_written_).c_str(), H5P_DEFAULT);
+      }
+      flushed = H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0;
+      MPI_Allreduce(MPI_IN_PLACE, &flushed, 1, MPI_INT, MPI_MIN, comm_);
+    }
     std::error_code error;
-    if (!flushed && rank_of(comm_) == 0) std::filesystem::resize_file(partial_path(), 0, error);
-    if (!flushed) MPI_Barrier(comm_);
+    if (!flushed) {
+      step_group_.close();
+      if (rank_of(comm_) == 0) std::filesystem::resize_file(partial_path(), 0, error);
+      MPI_Barrier(comm_);
+    }
     file_.close();
     if (rank_of(comm_) != 0) return;
     if (flushed) {
@@ -289,7 +309,7 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
       H5Dwrite(dataset.get(), memory_type(type), memory_space.get(), file_space.get(), transfer.get(),
                local_count > 0 ? data : &nothing) < 0)
     failed = failure_record{failure::system, "cannot write " + where + hdf5_reason()};
-  raise_if_any(comm_, failed);
+  raise_marking_storage_failure(comm_, failed, storage_failed_);
   step_datasets_.insert(name);
   step_length_ = place.global_length;
 }
@@ -311,7 +331,7 @@ void h5part_writer::end_step() {
   std::optional<failure_record> failed;
   if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0)
     failed = failure_record{failure::system, "cannot flush '" + partial_path() + "'" + hdf5_reason()};
-  raise_if_any(comm_, failed);
+  raise_marking_storage_failure(comm_, failed, storage_failed_);
 }
 
 void h5part_writer::finish() {
@@ -322,7 +342,7 @@ void h5part_writer::finish() {
   std::optional<failure_record> failed;
   if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0)
     failed = failure_record{failure::file, "cannot flush '" + partial_path() + "'" + hdf5_reason()};
-  raise_if_any(comm_, failed);
+  raise_marking_storage_failure(comm_, failed, storage_failed_);
   if (file_.close() < 0)
     failed = failure_record{failure::file, "cannot close '" + partial_path() + "'" + hdf5_reason()};
   raise_if_any(comm_, failed);

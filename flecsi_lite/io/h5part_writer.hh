@@ -123,6 +123,7 @@ private:
   std::int64_t steps_written_ = 0;
   std::int64_t last_iteration_ = -1;
   bool committing_ = false;                      // finished, the rename still to come
+  bool storage_failed_ = false;                  // a data write or flush failed on some rank
   std::set<std::string> step_datasets_;          // names written in the open step
   std::optional<std::uint64_t> step_length_;     // global length of the open step's datasets
 };

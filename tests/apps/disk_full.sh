@@ -1,7 +1,8 @@
 #!/bin/sh
 # A checkpoint or output written to a full disk: the app must exit with status 3 (not crash in
 # HDF5's clean-up at MPI_Finalize) and leave the earlier complete file of that name byte for byte.
-# The disk is a 2 MB tmpfs in a private mount namespace (unshare -m: no mount outlives the test);
+# The disk is a small tmpfs in a private mount namespace (unshare -m: no mount outlives the test),
+# of several sizes, so that it fills at different points: in a dataset, in the metadata flush;
 # where this shell may not make one (not root), the test is skipped (exit status 77). A file-size
 # limit (ulimit -f) is no substitute: Open MPI's start-up files need more than the limit allows.
 #
@@ -23,5 +24,11 @@ if ! unshare -m true 2>/dev/null; then
   echo "disk_full.sh: cannot make a private tmpfs here (needs root): skipped"
   exit 77
 fi
-exec unshare -m sh -c "mount -t tmpfs -o size=2m tmpfs '$folder' || exit 77
-  exec sh '$here/expect_failure.sh' 3 '$target' \"cannot write dataset .* in '$target'\" -- $launcher sh -c \"$run\""
+for size in 1m 2m 3m 4m; do
+  echo "--- a disk of $size"
+  rm -f "$target"
+  unshare -m sh -c "mount -t tmpfs -o size=$size tmpfs '$folder' || exit 77
+    exec sh '$here/expect_failure.sh' 3 '$target' \"cannot (write dataset .*|flush '$target.partial')\" -- $launcher sh -c \"$run\""
+  code=$?
+  [ "$code" -eq 0 ] || exit "$code"
+done
