@@ -141,6 +141,13 @@ public:
     functions_[h.point].push_back(std::move(f));
     return {structure_, h};
   }
+  /// Replaces the function of the action `name` on `point`, keeping its name, place and
+  /// dependencies: a specialization variant (e.g. another density or force pass) in one line.
+  action_handle replace(const std::string& point, const std::string& name, action_function f) {
+    const action_handle h = structure_.find_action(point, name);
+    functions_[h.point][h.index] = std::move(f);
+    return h;
+  }
   /// `later` runs after `earlier`; both must belong to the same control point.
   control_model& depends(action_handle later, action_handle earlier) {
     structure_.add_dependency(later, earlier);

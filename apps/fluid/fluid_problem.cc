@@ -1,0 +1,145 @@
+// The keys, layout and particles of the fluid app's problems (fluid_problem.hh).
+#include "fluid_problem.hh"
+
+#include "specialization/physics/kernels.hh"
+
+#include <cmath>
+#include <sstream>
+
+namespace fluid_app {
+
+namespace rt = flecsi_lite::runtime;
+
+const rt::name_table<problem_type>& problem_names() {
+  static const rt::name_table<problem_type> table{"fluid problem",
+                                                  {{"still_tank", problem_type::still_tank},
+                                                   {"poiseuille", problem_type::poiseuille},
+                                                   {"couette", problem_type::couette},
+                                                   {"dam_break", problem_type::dam_break}}};
+  return table;
+}
+
+namespace {
+rt::parameter_block<problem> declare() {
+  rt::parameter_block<problem> p;
+  p.choice("problem", &problem::type, problem_names(), "still_tank, poiseuille, couette or dam_break");
+  p.integer("dimension", &problem::dimension, "space dimension (2)").range(2, 2);
+  p.integer("particles", &problem::particles, "fluid particles across the reference length").range(4, 100000);
+  p.real("length", &problem::length, "reference length: depth H, channel width L, column width L")
+    .greater_than(0)
+    .at_most(1e10);
+  p.real("h_factor", &problem::h_factor, "h = h_factor dx").range(0.5, 3);
+  p.integer("wall_layers", &problem::wall_layers, "wall particle layers (0: enough for the support 2 h)")
+    .range(0, 100);
+  p.real("lid_velocity", &problem::lid_velocity, "couette: velocity of the lid").range(-1e10, 1e10);
+  p.real("channel_length", &problem::channel_length, "channels: period along x (0: L / 2)").range(0, 1e10);
+  p.real("tank_width", &problem::tank_width, "still tank: width (0: 2 H)").range(0, 1e10);
+  p.real("column_offset", &problem::column_offset, "shift of the fluid along x (0: at the left wall)")
+    .range(-1e10, 1e10);
+  return p;
+}
+
+std::string text(double value) {
+  std::ostringstream s;
+  s.precision(6);
+  s << value;
+  return s.str();
+}
+} // namespace
+
+const rt::parameter_block<problem>& problem_parameters() {
+  static const auto block = declare();
+  return block;
+}
+
+layout layout_of(const std::string& program, const problem& p, flecsph::fluid::fluid_settings& fluid) {
+  layout l;
+  const double L = p.length;
+  l.dx = L / double(p.particles);
+  l.h = p.h_factor * l.dx;
+  const double support = flecsph::physics::kernel_support * l.h;
+  const auto needed = static_cast<std::int64_t>(std::ceil(support / l.dx - 1e-12));
+  l.layers = p.wall_layers ? p.wall_layers : needed;
+  if (double(l.layers) * l.dx < support - 1e-12 * l.dx)
+    throw rt::parameter_error(program + ": wall_layers = " + std::to_string(l.layers) + " (" +
+                              text(double(l.layers) * l.dx) + " thick) is thinner than the kernel support 2 h = " +
+                              text(support) + " (h_factor = " + text(p.h_factor) + "): at least " +
+                              std::to_string(needed) + " layers");
+  const double g = std::sqrt(fluid.body_force[0] * fluid.body_force[0] + fluid.body_force[1] * fluid.body_force[1]);
+  const double nu = fluid.kinematic_viscosity();
+  switch (p.type) {
+  case problem_type::still_tank: {
+    const double width = p.tank_width > 0 ? p.tank_width : 2 * L;
+    l.fluid_lo = {p.column_offset, 0}, l.fluid_hi = {p.column_offset + width, L};
+    l.tank_lo = {0, 0}, l.tank_hi = {width, 1.5 * L};
+    l.speed_scale = std::sqrt(g * L);
+    break;
+  }
+  case problem_type::dam_break:
+    l.fluid_lo = {p.column_offset, 0}, l.fluid_hi = {p.column_offset + L, 2 * L};
+    l.tank_lo = {0, 0}, l.tank_hi = {4 * L, 3 * L};
+    l.speed_scale = std::sqrt(2 * g * 2 * L);  // the front's speed, sqrt(2 g H) with H = 2 L
+    break;
+  case problem_type::poiseuille:
+  case problem_type::couette: {
+    const double period = p.channel_length > 0 ? p.channel_length : 0.5 * L;
+    l.periodic_x = true;
+    l.top_wall = true;
+    l.fluid_lo = {0, 0}, l.fluid_hi = {period, L};
+    l.tank_lo = {0, 0}, l.tank_hi = {period, L};
+    if (p.type == problem_type::poiseuille) {
+      if (!(nu > 0)) throw rt::parameter_error(program + ": poiseuille needs dynamic_viscosity > 0");
+      l.speed_scale = std::fabs(fluid.body_force[0]) * L * L / (8 * nu);
+    } else {
+      l.speed_scale = std::fabs(p.lid_velocity);
+    }
+    break;
+  }
+  }
+  if (!l.periodic_x && (l.fluid_lo[0] < l.tank_lo[0] - 1e-12 * L || l.fluid_hi[0] > l.tank_hi[0] + 1e-12 * L))
+    throw rt::parameter_error(program + ": column_offset = " + text(p.column_offset) + " puts fluid particles inside a wall: the fluid spans x in [" +
+                              text(l.fluid_lo[0]) + ", " + text(l.fluid_hi[0]) + "], the tank's inside [" +
+                              text(l.tank_lo[0]) + ", " + text(l.tank_hi[0]) + "]");
+  fluid.expected_speed = l.speed_scale;
+  flecsph::fluid::check_sound_speed(program, fluid);
+  return l;
+}
+
+std::vector<particle> particles_of(const problem& p, const layout& l, const flecsph::fluid::fluid_settings& fluid) {
+  std::vector<particle> out;
+  const double dx = l.dx, volume = dx * dx, rho0 = fluid.eos.reference_density;
+  const double g = -fluid.body_force[1];  // gravity along -y (hydrostatic start)
+  const double depth = l.fluid_hi[1];
+  const auto count = [dx](double lo, double hi) { return static_cast<std::int64_t>(std::llround((hi - lo) / dx)); };
+  const std::int64_t nx = count(l.fluid_lo[0], l.fluid_hi[0]), ny = count(l.fluid_lo[1], l.fluid_hi[1]);
+  for (std::int64_t j = 0; j < ny; ++j)
+    for (std::int64_t i = 0; i < nx; ++i) {
+      const double x = l.fluid_lo[0] + (double(i) + 0.5) * dx, y = l.fluid_lo[1] + (double(j) + 0.5) * dx;
+      const double rho = fluid.eos.density(fluid.eos.background_pressure + rho0 * g * (depth - y));
+      out.push_back({{x, y}, rho * volume, rho, false, {0, 0}});
+    }
+  const double wall_mass = rho0 * volume;
+  const std::int64_t n = l.layers;
+  const std::int64_t tank_nx = count(l.tank_lo[0], l.tank_hi[0]), tank_ny = count(l.tank_lo[1], l.tank_hi[1]);
+  const std::int64_t first = l.periodic_x ? 0 : -n, last = l.periodic_x ? tank_nx : tank_nx + n;
+  // Bottom (and for channels top) layers, corners included.
+  for (std::int64_t k = 0; k < n; ++k)
+    for (std::int64_t i = first; i < last; ++i)
+      out.push_back({{l.tank_lo[0] + (double(i) + 0.5) * dx, l.tank_lo[1] - (double(k) + 0.5) * dx}, wall_mass, rho0, true, {0, 0}});
+  if (l.top_wall) {
+    const double lid = p.type == problem_type::couette ? p.lid_velocity : 0.0;
+    for (std::int64_t k = 0; k < n; ++k)
+      for (std::int64_t i = first; i < last; ++i)
+        out.push_back({{l.tank_lo[0] + (double(i) + 0.5) * dx, l.tank_hi[1] + (double(k) + 0.5) * dx}, wall_mass, rho0, true, {lid, 0}});
+  }
+  if (!l.periodic_x)
+    for (std::int64_t j = 0; j < tank_ny; ++j)
+      for (std::int64_t k = 0; k < n; ++k) {
+        const double y = l.tank_lo[1] + (double(j) + 0.5) * dx;
+        out.push_back({{l.tank_lo[0] - (double(k) + 0.5) * dx, y}, wall_mass, rho0, true, {0, 0}});
+        out.push_back({{l.tank_hi[0] + (double(k) + 0.5) * dx, y}, wall_mass, rho0, true, {0, 0}});
+      }
+  return out;
+}
+
+} // namespace fluid_app

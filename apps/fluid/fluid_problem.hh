@@ -1,0 +1,62 @@
+// The liquid problems of the fluid app (2D, square lattice of spacing dx, Adami et al. 2012 dummy
+// walls in layers): a still tank (hydrostatics), plane Poiseuille and Couette flow (periodic along
+// x), and the dam break of Martin & Moyce (1952): the parameters and the particles.
+#pragma once
+
+#include "specialization/fluid/fluid_settings.hh"
+#include "specialization/sph/settings.hh"
+
+#include "flecsi_lite/runtime.hh"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fluid_app {
+
+enum class problem_type { still_tank, poiseuille, couette, dam_break };
+const flecsi_lite::runtime::name_table<problem_type>& problem_names();
+
+struct problem {
+  problem_type type = problem_type::dam_break;
+  int dimension = 2;
+  /// Fluid particles across the reference length: the depth H (tank), the width L (channels),
+  /// the column width L (dam break).
+  std::int64_t particles = 50;
+  double length = 1;        ///< the reference length (m)
+  double h_factor = 1.3;    ///< h = h_factor dx
+  std::int64_t wall_layers = 0;  ///< 0: enough to cover the kernel support 2 h
+  double lid_velocity = 1e-5;    ///< couette: v0 of the lid at y = L
+  double channel_length = 0;     ///< channels: the period along x (0: L / 2)
+  double tank_width = 0;         ///< still tank: width (0: 2 H)
+  double column_offset = 0;      ///< shifts the fluid along x (0: touching the left wall)
+};
+
+const flecsi_lite::runtime::parameter_block<problem>& problem_parameters();
+
+/// The lattice and the fluid and tank boxes derived from the keys.
+struct layout {
+  double dx = 0, h = 0;
+  std::int64_t layers = 0;
+  std::array<double, 2> fluid_lo{}, fluid_hi{};  ///< fluid block
+  std::array<double, 2> tank_lo{}, tank_hi{};    ///< inside of the walls (channels: lo.y, hi.y only)
+  bool periodic_x = false, top_wall = false;
+  double speed_scale = 0;  ///< the flow's expected largest speed
+};
+
+/// The layout; parameter_errors name the keys: wall layers thinner than the support 2 h, a fluid
+/// particle inside a wall (column_offset), c0 not above the speed scale (check_sound_speed).
+layout layout_of(const std::string& program, const problem& p, flecsph::fluid::fluid_settings& fluid);
+
+struct particle {
+  std::array<double, 2> x;
+  double m, rho;
+  bool wall;
+  std::array<double, 2> wall_velocity;
+};
+/// Every particle of the problem in a fixed order (fluid, then walls); fluid in hydrostatic
+/// equilibrium rho(y) = rho(P = rho0 |g| (H - y) + P_b), m = rho dx^2; walls m = rho0 dx^2.
+std::vector<particle> particles_of(const problem& p, const layout& l, const flecsph::fluid::fluid_settings& fluid);
+
+} // namespace fluid_app

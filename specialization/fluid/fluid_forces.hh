@@ -1,0 +1,152 @@
+// The rates of weakly compressible SPH for a fluid particle: drho/dt by the continuity equation
+// with delta-SPH diffusion (Molteni & Colagrossi 2009, CPC 180, 861; the hydrostatic part removed
+// as in Antuono et al. 2012, CPC 183, 2570 and Fourtakas et al. 2019, Comput. Fluids 190, 346),
+// the pressure force, laminar (Morris, Fox & Zhu 1997, JCP 136, 214) or artificial (Monaghan
+// 1992) viscosity, the body force, and the time step from c0, h^2 / nu and the acceleration.
+#pragma once
+
+#include "specialization/fluid/fluid_fields.hh"
+#include "specialization/fluid/fluid_settings.hh"
+
+#include "specialization/sph/kernel_at.hh"
+#include "specialization/sph/neighbourhood.hh"
+#include "specialization/sph/tasks.hh"
+
+#include "specialization/physics/kernels.hh"
+
+#include "flecsi_lite/execution.hh"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace flecsph::fluid {
+
+namespace detail {
+/// The arrays the rates read (owned and ghost particles).
+template<int D>
+struct rate_fields {
+  const vector<D>*x, *v, *wall_velocity;
+  const double *m, *h, *rho, *P, *cs;
+  const sph::particle_kind* kind;
+};
+
+/// dv_a/dt and drho_a/dt over a's list; for a pair (a, b), r = x_a - x_b, grad_a W = F r,
+/// F = (F(h_a) + F(h_b)) / 2, V_b = m_b / rho_b:
+///   dv/dt   = -sum_b m_b (P_a + P_b) / (rho_a rho_b) F r                                  (pressure)
+///           + sum_b m_b 2 mu r^2 F / (rho_a rho_b (r^2 + 0.01 h^2)) v_ab               (Morris eq. 8)
+///           or -sum_b m_b Pi_ab F r with Pi_ab = -alpha h c_ab (v_ab . r) / (rho_ab (r^2 + 0.01 h^2))
+///           + g
+///   drho/dt = rho_a sum_b V_b (v_a - v_b) . r F                                      (continuity)
+///           + delta h c0 sum_fluid b V_b 2 (rho_b^H - rho_b) F                          (delta-SPH)
+/// where rho_b^H = rho_a - rho0 (g . r) / c_a^2 is the density that hydrostatics gives at b seen
+/// from a, so the diffusion vanishes on the hydrostatic state. Walls enter with their
+/// extrapolated P, rho and (no-slip) velocity, the continuity sum with their own velocity.
+template<class Kernel, int D>
+void fluid_rates(const sph::neighbour_walk<D>& walk, std::size_t a, const rate_fields<D>& in,
+                 const fluid_settings& settings, bool summation, vector<D>& dv_dt, double& drho_dt) {
+  const double support2 = physics::kernel_support * physics::kernel_support;
+  const vector<D> x_a = in.x[a], v_a = in.v[a];
+  const double h_a = in.h[a], rho_a = in.rho[a], P_a = in.P[a], c_a = in.cs[a];
+  const sph::kernel_at<Kernel> kernel_a(h_a);
+  const double mu2 = 2 * settings.dynamic_viscosity;
+  const bool laminar = settings.viscosity == viscosity_model::laminar;
+  const bool wall_viscosity = settings.walls == wall_condition::no_slip;
+  const double diffusion = summation ? 0.0 : settings.delta * h_a * settings.eos.reference_sound_speed;
+  const double rho0 = settings.eos.reference_density;
+  vector<D> r, sum_v{};
+  double sum_rho = 0, sum_delta = 0;
+  for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
+    const std::size_t b = walk.neighbour(j);
+    const double r2 = walk.separation(x_a, in.x[b], j, r);
+    const double h_b = in.h[b], h_max = std::max(h_a, h_b);
+    if (r2 >= support2 * h_max * h_max || r2 == 0) continue;
+    const double distance = std::sqrt(r2);
+    const double F = 0.5 * (kernel_a.gradient_factor(distance) + sph::kernel_at<Kernel>(h_b).gradient_factor(distance));
+    const double rho_b = in.rho[b], m_b = in.m[b], volume_b = m_b / rho_b;
+    const bool wall = in.kind[b] != sph::particle_kind::fluid;
+    double pair = -m_b * (P_a + in.P[b]) / (rho_a * rho_b) * F;  // times r
+    vector<D> v_ab;
+    double v_dot_r = 0;
+    for (int k = 0; k < D; ++k) {
+      v_ab[k] = v_a[k] - in.v[b][k];
+      v_dot_r += v_ab[k] * r[k];
+    }
+    const double h_ab = 0.5 * (h_a + h_b), softening = 0.01 * h_ab * h_ab;
+    const bool viscous = !wall || wall_viscosity;
+    double laminar_factor = 0;
+    if (viscous && laminar) laminar_factor = m_b * mu2 * r2 * F / (rho_a * rho_b * (r2 + softening));
+    if (viscous && !laminar && v_dot_r < 0) {
+      const double Pi = -settings.artificial_alpha * h_ab * 0.5 * (c_a + in.cs[b]) * v_dot_r /
+                        (0.5 * (rho_a + rho_b) * (r2 + softening));
+      pair -= m_b * Pi * F;
+    }
+    for (int k = 0; k < D; ++k) sum_v[k] += pair * r[k] + laminar_factor * v_ab[k];
+    // Continuity with the wall's own velocity (its `velocity` is the no-slip extrapolation).
+    double continuity = v_dot_r;
+    if (wall) {
+      continuity = 0;
+      for (int k = 0; k < D; ++k) continuity += (v_a[k] - in.wall_velocity[b][k]) * r[k];
+    }
+    sum_rho += volume_b * continuity * F;
+    if (!wall && diffusion > 0) {
+      double g_dot_r = 0;
+      for (int k = 0; k < D; ++k) g_dot_r += settings.body_force[k] * r[k];
+      const double hydrostatic_b = rho_a - rho0 * g_dot_r / (c_a * c_a);
+      sum_delta += volume_b * 2 * (hydrostatic_b - rho_b) * F;
+    }
+  }
+  for (int k = 0; k < D; ++k) dv_dt[k] = sum_v[k] + settings.body_force[k];
+  drho_dt = summation ? 0.0 : rho_a * sum_rho + diffusion * sum_delta;
+}
+} // namespace detail
+
+/// Accelerations and drho/dt of the owned fluid particles (walls get zero), and the smallest
+/// time step of them: min(courant h / (c + |v|), acceleration_factor sqrt(h / |a|),
+/// viscous_factor h^2 / nu) (Monaghan 1992; Morris et al. 1997 eqs. 23-25); the largest double
+/// when there is no fluid particle.
+template<int D>
+double compute_fluid_rates(sph::neighbours_ro<D> neighbours_object, physics::kernel_type kernel_type,
+                           fluid_settings settings, double courant, double acceleration_factor,
+                           sph::ro_with_ghosts<vector<D>> x, sph::ro_with_ghosts<vector<D>> v,
+                           sph::ro_with_ghosts<vector<D>> wall_velocity, sph::ro_with_ghosts<double> m,
+                           sph::ro_with_ghosts<double> h, sph::ro_with_ghosts<double> rho,
+                           sph::ro_with_ghosts<double> P, sph::ro_with_ghosts<double> cs,
+                           sph::ro_with_ghosts<sph::particle_kind> kind, sph::wo<vector<D>> acceleration,
+                           sph::wo<double> density_rate) {
+  const sph::neighbourhood<D>& neighbours = *neighbours_object;
+  const sph::neighbour_walk<D> walk(neighbours);
+  const detail::rate_fields<D> in{x.data(), v.data(), wall_velocity.data(), m.data(), h.data(),
+                                  rho.data(), P.data(), cs.data(), kind.data()};
+  const bool summation = settings.density == density_method::summation;
+  const double nu = settings.kinematic_viscosity();
+  double smallest = std::numeric_limits<double>::max();
+  physics::dispatch_kernel<D>(kernel_type, [&](auto kernel_type_tag) {
+    using Kernel = decltype(kernel_type_tag);
+    flecsi_lite::forall_reduce(
+      neighbours.size(),
+      [&](std::size_t a, double& local_smallest) {
+        if (kind(a) != sph::particle_kind::fluid) {
+          acceleration(a) = vector<D>{};
+          density_rate(a) = 0;
+          return;
+        }
+        vector<D> dv_dt;
+        double drho_dt;
+        detail::fluid_rates<Kernel, D>(walk, a, in, settings, summation, dv_dt, drho_dt);
+        acceleration(a) = dv_dt;
+        density_rate(a) = drho_dt;
+        double a2 = 0, v2 = 0;
+        for (int k = 0; k < D; ++k) a2 += dv_dt[k] * dv_dt[k], v2 += v(a)[k] * v(a)[k];
+        const double h_a = h(a);
+        double dt = courant * h_a / (cs(a) + std::sqrt(v2));
+        if (a2 > 0) dt = std::min(dt, acceleration_factor * std::sqrt(h_a / std::sqrt(a2)));
+        if (nu > 0) dt = std::min(dt, settings.viscous_factor * h_a * h_a / nu);
+        local_smallest = std::min(local_smallest, dt);
+      },
+      Kokkos::Min<double>(smallest), "fluid::compute_fluid_rates", sph::target_schedule);
+  });
+  return smallest;
+}
+
+} // namespace flecsph::fluid
