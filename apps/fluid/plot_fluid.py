@@ -1,0 +1,127 @@
+#!/usr/bin/python3
+# Plots of the fluid app's runs (PNG): the dam break's surge front Z/L against T = t sqrt(2g/L)
+# with Martin & Moyce (1952) and the water's shape at several times; the channel flows' velocity
+# profiles against their series solutions (Morris et al. 1997); the still tank's pressure profile.
+#
+#   /usr/bin/python3 apps/fluid/plot_fluid.py dam_break.h5part [--out dam_break.png]
+import argparse
+import math
+import os
+
+import h5py
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def parameters(f):
+    """The run's resolved parameters (root attribute 'parameters') as a dict of strings."""
+    text = f.attrs["parameters"]
+    text = text.decode() if isinstance(text, bytes) else str(text)
+    values = {}
+    for line in text.splitlines():
+        line = line.split("#")[0].strip()
+        if "=" in line:
+            key, value = line.split("=", 1)
+            values[key.strip()] = value.strip().strip("\"")
+    return values
+
+
+def steps(f):
+    return sorted(f.keys(), key=lambda k: int(k.split("#")[1]))
+
+
+def poiseuille(y, t, L, F, nu, terms=200):
+    v = F / (2 * nu) * y * (L - y)
+    for n in range(terms):
+        k = 2 * n + 1
+        v -= 4 * F * L * L / (nu * math.pi ** 3 * k ** 3) * np.sin(k * math.pi * y / L) * math.exp(-k * k * math.pi ** 2 * nu * t / L ** 2)
+    return v
+
+
+def couette(y, t, L, v0, nu, terms=400):
+    v = v0 * y / L
+    for n in range(1, terms + 1):
+        v += 2 * v0 * (-1) ** n / (n * math.pi) * np.sin(n * math.pi * y / L) * math.exp(-n * n * math.pi ** 2 * nu * t / L ** 2)
+    return v
+
+
+def fluid_of(group):
+    keep = group["kind"][:] == 0
+    return {name: group[name][:][keep] for name in ("x", "y", "vx", "vy", "P", "rho")}
+
+
+def plot_dam_break(f, p, series_path, out):
+    L = float(p["length"]); g = -float(p.get("body_force_y", "-9.81"))
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    experiment = np.loadtxt(os.path.join(HERE, "martin_moyce_1952.txt"))
+    ax = axes[0]
+    ax.plot(experiment[:, 0], experiment[:, 1], "ko", label="Martin & Moyce (1952), a = 2.25 in")
+    if os.path.exists(series_path):
+        s = np.loadtxt(series_path)
+        dx = L / float(p["particles"])
+        ax.plot(s[:, 0] * math.sqrt(2 * g / L), (s[:, 1] + 0.5 * dx) / L, "b-", label="SPH, dx = L/%s" % p["particles"])
+    ax.set_xlim(0, 3.2); ax.set_ylim(1, 4)
+    ax.axvspan(1, 2.8, color="0.9", label="compared: 1 <= T <= 2.8")
+    ax.set_xlabel("T = t sqrt(2 g / L)"); ax.set_ylabel("Z / L"); ax.legend(); ax.set_title("surge front")
+    ax = axes[1]
+    names = steps(f)
+    picks = [names[int(i)] for i in np.linspace(0, len(names) - 1, 4)]
+    for offset, name in enumerate(picks):
+        q = fluid_of(f[name]); t = float(f[name].attrs.get("time", 0))
+        ax.scatter(q["x"] / L, q["y"] / L + 0 * offset, s=1, label="T = %.2f" % (t * math.sqrt(2 * g / L)))
+    ax.set_aspect("equal"); ax.set_xlim(0, 4); ax.set_ylim(0, 3)
+    ax.set_xlabel("x / L"); ax.set_ylabel("y / L"); ax.legend(markerscale=8); ax.set_title("water at several times")
+    fig.tight_layout(); fig.savefig(out, dpi=120)
+
+
+def plot_channel(f, p, out, kind):
+    L = float(p["length"]); mu = float(p.get("dynamic_viscosity", "0")); rho0 = float(p.get("rho0", "1000"))
+    nu = mu / rho0
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for name in steps(f)[1:]:
+        q = fluid_of(f[name]); t = float(f[name].attrs.get("time", 0))
+        y = np.linspace(0, L, 101)
+        exact = poiseuille(y, t, L, float(p["body_force_x"]), nu) if kind == "poiseuille" else couette(y, t, L, float(p["lid_velocity"]), nu)
+        line, = ax.plot(exact, y / L, "-", lw=1)
+        ax.plot(q["vx"], q["y"] / L, ".", ms=3, color=line.get_color(), label="t = %.2f L^2/nu" % (t * nu / L ** 2))
+    ax.set_xlabel("v_x (m/s)"); ax.set_ylabel("y / L"); ax.legend(fontsize=7)
+    ax.set_title("%s: SPH (dots) against the series solution (lines)" % kind)
+    fig.tight_layout(); fig.savefig(out, dpi=120)
+
+
+def plot_still_tank(f, p, out):
+    L = float(p["length"]); g = -float(p.get("body_force_y", "-9.81")); rho0 = float(p.get("rho0", "1000"))
+    q = fluid_of(f[steps(f)[-1]])
+    fig, ax = plt.subplots(figsize=(6, 5))
+    ax.plot(q["P"] / (rho0 * g * L), q["y"] / L, ".", ms=2, label="SPH (last step)")
+    y = np.linspace(0, L, 50)
+    ax.plot((L - y) / L, y / L, "k-", label="rho0 g (H - y)")
+    ax.set_xlabel("P / (rho0 g H)"); ax.set_ylabel("y / H"); ax.legend(); ax.set_title("still tank")
+    fig.tight_layout(); fig.savefig(out, dpi=120)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("file")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    with h5py.File(args.file, "r") as f:
+        p = parameters(f)
+        kind = p["problem"]
+        out = args.out or os.path.splitext(args.file)[0] + ".png"
+        series = os.path.splitext(args.file)[0] + ".series.txt"
+        if kind == "dam_break":
+            plot_dam_break(f, p, series, out)
+        elif kind in ("poiseuille", "couette"):
+            plot_channel(f, p, out, kind)
+        else:
+            plot_still_tank(f, p, out)
+    print("wrote", out)
+
+
+if __name__ == "__main__":
+    main()
