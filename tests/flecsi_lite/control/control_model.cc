@@ -191,3 +191,19 @@ TEST_CASE("the Graphviz output shows a placed action, marked, between its anchor
   CHECK(text.find("p0a1 -> p0a2") == std::string::npos);  // no longer forces -> kick directly
   CHECK(text.find("p0a0 [label=\"kick_drift\"];") != std::string::npos);  // unplaced: plain
 }
+
+TEST_CASE("replace swaps an action's function and keeps its name, place and dependencies") {
+  control_model<state> m;
+  m.point("advance");
+  auto density = m.action("advance", "density", logger("summation"));
+  auto forces = m.action("advance", "forces", logger("forces"));
+  m.action("advance", "cooling", logger("cooling")).after("density");
+  m.depends(forces, density);
+  const auto handle = m.replace("advance", "density", logger("continuity"));
+  CHECK(handle.index == flecsi_lite::control::action_handle(density).index);
+  CHECK(m.order("advance") == std::vector<std::string>{"density", "cooling", "forces"});
+  state s;
+  m.run(s);
+  CHECK(s.log == std::vector<std::string>{"continuity0", "cooling0", "forces0"});
+  CHECK_THROWS_AS(m.replace("advance", "no_such_action", logger("x")), control_error);
+}
