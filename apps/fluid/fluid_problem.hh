@@ -25,7 +25,7 @@ struct problem {
   /// the column width L (dam break).
   std::int64_t particles = 50;
   double length = 1;        ///< the reference length (m)
-  double h_factor = 1.3;    ///< h = h_factor dx
+  double h_factor = 1.5;    ///< h = h_factor dx (docs/fluid-flow.md: the lattice moment)
   std::int64_t wall_layers = 0;  ///< 0: enough to cover the kernel support 2 h
   double lid_velocity = 1e-5;    ///< couette: v0 of the lid at y = L
   double channel_length = 0;     ///< channels: the period along x (0: L / 2)
