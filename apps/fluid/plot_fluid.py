@@ -56,25 +56,26 @@ def fluid_of(group):
 
 def plot_dam_break(f, p, series_path, out):
     L = float(p["length"]); g = -float(p.get("body_force_y", "-9.81"))
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    fig = plt.figure(figsize=(13, 6))
     experiment = np.loadtxt(os.path.join(HERE, "martin_moyce_1952.txt"))
-    ax = axes[0]
+    ax = fig.add_subplot(1, 2, 1)
+    ax.axvspan(1, 2.8, color="0.9", label="compared: 1 <= T <= 2.8")
     ax.plot(experiment[:, 0], experiment[:, 1], "ko", label="Martin & Moyce (1952), a = 2.25 in")
     if os.path.exists(series_path):
         s = np.loadtxt(series_path)
         dx = L / float(p["particles"])
         ax.plot(s[:, 0] * math.sqrt(2 * g / L), (s[:, 1] + 0.5 * dx) / L, "b-", label="SPH, dx = L/%s" % p["particles"])
     ax.set_xlim(0, 3.2); ax.set_ylim(1, 4)
-    ax.axvspan(1, 2.8, color="0.9", label="compared: 1 <= T <= 2.8")
     ax.set_xlabel("T = t sqrt(2 g / L)"); ax.set_ylabel("Z / L"); ax.legend(); ax.set_title("surge front")
-    ax = axes[1]
     names = steps(f)
     picks = [names[int(i)] for i in np.linspace(0, len(names) - 1, 4)]
-    for offset, name in enumerate(picks):
+    for index, name in enumerate(picks):
+        ax = fig.add_subplot(4, 2, 2 * index + 2)
         q = fluid_of(f[name]); t = float(f[name].attrs.get("time", 0))
-        ax.scatter(q["x"] / L, q["y"] / L + 0 * offset, s=1, label="T = %.2f" % (t * math.sqrt(2 * g / L)))
-    ax.set_aspect("equal"); ax.set_xlim(0, 4); ax.set_ylim(0, 3)
-    ax.set_xlabel("x / L"); ax.set_ylabel("y / L"); ax.legend(markerscale=8); ax.set_title("water at several times")
+        ax.scatter(q["x"] / L, q["y"] / L, s=0.5, c=q["P"], cmap="viridis")
+        ax.set_aspect("equal"); ax.set_xlim(0, 4); ax.set_ylim(0, 2.1)
+        ax.set_title("T = %.2f (colour: P)" % (t * math.sqrt(2 * g / L)), fontsize=8)
+        ax.tick_params(labelsize=7)
     fig.tight_layout(); fig.savefig(out, dpi=120)
 
 
