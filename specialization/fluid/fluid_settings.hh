@@ -8,6 +8,7 @@
 #include "flecsi_lite/runtime.hh"
 
 #include <array>
+#include <string>
 
 namespace flecsph::fluid {
 

@@ -14,6 +14,7 @@
 
 #include "flecsi_lite/execution.hh"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
