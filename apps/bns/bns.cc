@@ -34,6 +34,7 @@ const sph::particle_tree<3>::definition<vec> relaxation_acceleration{"bns_relaxa
 struct bns_run : sph::app_state<3> {
   bns::problem problem;
   double G = 1, K = 0, dynamical_time = 0, omega = 0;
+  double force_omega = 0;  ///< Omega of the stars' mean accelerations at the last relaxation step
   std::uint64_t first_star_end = 0;  ///< ids below: the first star (all of a single star)
   bool relaxing = false;
   double release_time = -1;  ///< when the relaxation ended (-1: not during this run)
@@ -69,8 +70,17 @@ void relaxation_forces(bns_run& s) {
   std::array<vec, 2> held{};
   double omega2 = 0;
   if (s.problem.kind == bns::setup::binary) {
-    omega2 = s.omega * s.omega;
     const auto stars = bns::measure_stars(s, s.first_star_end);  // the forces alone
+    // The Omega that balances them for circular motion of the centres: -(A2 - A1).(X2 - X1) / |X2 - X1|^2.
+    double along = 0, d2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = stars.centre[1][k] - stars.centre[0][k];
+      along -= (stars.acceleration[1][k] - stars.acceleration[0][k]) * d;
+      d2 += d * d;
+    }
+    s.force_omega = along > 0 ? std::sqrt(along / d2) : 0.0;
+    if (s.problem.orbit_omega == bns::omega_rule::forces && s.force_omega > 0) s.omega = s.force_omega;
+    omega2 = s.omega * s.omega;
     for (int star = 0; star < 2; ++star)
       for (int k = 0; k < 3; ++k)
         held[star][k] = stars.acceleration[star][k] + (k < 2 ? omega2 * stars.centre[star][k] : 0.0);
@@ -122,7 +132,10 @@ void relaxation_check(bns_run& s) {
     auto& p = *s.particles;
     flecsi_lite::execute<corotate>(s.omega, f::kind(p), f::position()(p), relaxation_acceleration(p), f::velocity(p),
                                    f::acceleration(p));
-    line << "; released with Omega = " << s.omega << " (Kepler), orbital period " << 2 * std::acos(-1.0) / s.omega;
+    line << "; released with Omega = " << s.omega << " ("
+         << (s.problem.orbit_omega == bns::omega_rule::kepler ? "Kepler" : "the forces") << "), orbital period "
+         << 2 * std::acos(-1.0) / s.omega << "; Kepler " << bns::kepler_omega(s.problem, s.G)
+         << ", the stars' mean forces " << s.force_omega;
   }
   log::info() << line.str();
 }

@@ -25,6 +25,9 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
   keys.real("separation", &problem::separation, "setup = binary: distance a of the stars' centres").greater_than(0);
   keys.boolean("stable_orbit", &problem::stable_orbit,
                "setup = binary: require both stars inside their Roche lobes (Eggleton 1983)");
+  keys.choice("orbit_omega", &problem::orbit_omega, omega_rule_names(),
+              "setup = binary: Omega of the corotating frame and the release (kepler, or forces: balancing the "
+              "stars' mean accelerations)");
   keys.real("relaxation_time", &problem::relaxation_time,
             "longest damped relaxation, in units of t_dyn = sqrt(R^3 / (G M)) (0: none)")
     .at_least(0);
@@ -47,6 +50,12 @@ double sinc(double x) { return std::fabs(x) < 1e-8 ? 1 - x * x / 6 : std::sin(x)
 
 const flecsi_lite::runtime::name_table<setup>& setup_names() {
   static const flecsi_lite::runtime::name_table<setup> table{"setup", {{"star", setup::star}, {"binary", setup::binary}}};
+  return table;
+}
+
+const flecsi_lite::runtime::name_table<omega_rule>& omega_rule_names() {
+  static const flecsi_lite::runtime::name_table<omega_rule> table{
+    "orbit_omega", {{"kepler", omega_rule::kepler}, {"forces", omega_rule::forces}}};
   return table;
 }
 

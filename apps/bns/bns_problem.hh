@@ -23,6 +23,11 @@ namespace sph = flecsph::sph;
 enum class setup { star, binary };
 const flecsi_lite::runtime::name_table<setup>& setup_names();
 
+/// Omega of the corotating frame and the release: Kepler's for point masses, or the one that
+/// balances the stars' measured mean accelerations (tides included), updated every relaxation step.
+enum class omega_rule { kepler, forces };
+const flecsi_lite::runtime::name_table<omega_rule>& omega_rule_names();
+
 struct problem {
   setup kind = setup::star;
   std::int64_t particles = 5000;  ///< about this many particles in a lattice star
@@ -32,6 +37,7 @@ struct problem {
   std::string star_file;          ///< binary: the relaxed single star (its last step)
   double separation = 4;          ///< binary: distance a of the stars' centres
   bool stable_orbit = true;       ///< binary: refuse a separation at which a star fills its Roche lobe
+  omega_rule orbit_omega = omega_rule::kepler;
   /// Damped relaxation (times in units of t_dyn = sqrt(R^3 / (G M))): at most relaxation_time, at
   /// least relaxation_min_time, until K / |W| < relaxation_tolerance; damping a -= v / damping_time.
   double relaxation_time = 0;
