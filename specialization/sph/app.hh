@@ -49,6 +49,10 @@ struct app_state : simulation<D> {
   statistics_settings statistics_keys;  ///< statistics_file resolved ("auto" replaced; empty: none)
   statistics_log statistics;
   double statistics_dt = 0;  ///< the step about to be taken: the dt of the next row
+  /// Columns an app appends to the statistics file, and their values at a row (called on every
+  /// rank, so it may reduce); none by default.
+  std::vector<statistics_column> extra_statistics_columns;
+  std::function<std::vector<double>()> extra_statistics;
   flecsi_lite::app::stop_monitor stop;  ///< wall_time_limit and stop_file
   std::string stop_reason;              ///< why the run stopped before end_time ("": it did not)
   std::string allowed_changes;          ///< allow_parameter_changes
@@ -220,6 +224,12 @@ double mean_neighbours(const app_state<D>& s) {
   return s.particles->global_size() ? total / double(s.particles->global_size()) : 0.0;
 }
 
+/// The values of the app's own statistics columns (none unless it set extra_statistics).
+template<int D>
+std::vector<double> extra_statistics_values(app_state<D>& s) {
+  return s.extra_statistics ? s.extra_statistics() : std::vector<double>();
+}
+
 /// The first row of a new run; a restart writes none for its restart step (the run it continues did).
 template<int D>
 void open_statistics(app_state<D>& s) {
@@ -238,12 +248,12 @@ void open_statistics(app_state<D>& s) {
     std::vector<std::string> lines = description;
     std::istringstream parameters(s.parameters_text);
     for (std::string line; std::getline(parameters, line);) lines.push_back("  " + line);
-    header = statistics_header<D>(lines, s.physics.gravity.enabled);
+    header = statistics_header<D>(lines, s.physics.gravity.enabled, s.extra_statistics_columns);
   }
   s.statistics.open(s.statistics_keys.file, header, s.restarted ? std::optional<long>(s.step) : std::nullopt);
   if (!s.restarted)
     s.statistics.write(statistics_line<D>(s.step, s.time, 0.0, measure_conserved(s), mean_neighbours(s),
-                                          s.physics.gravity.enabled));
+                                          s.physics.gravity.enabled, extra_statistics_values(s)));
 }
 
 /// A row every statistics_every steps and at the last; the totals of the conserved line when it
@@ -253,7 +263,8 @@ void statistics_row(app_state<D>& s) {
   const double dt = std::exchange(s.statistics_dt, s.dt);
   if (!s.statistics.is_open() || !(s.finished || s.step % s.statistics_keys.every == 0)) return;
   const conserved_totals<D> totals = s.totals_step == s.step ? s.totals : measure_conserved(s);
-  s.statistics.write(statistics_line<D>(s.step, s.time, dt, totals, mean_neighbours(s), s.physics.gravity.enabled));
+  s.statistics.write(statistics_line<D>(s.step, s.time, dt, totals, mean_neighbours(s), s.physics.gravity.enabled,
+                                        extra_statistics_values(s)));
 }
 
 /// After the clock: a run that max_steps stopped before end_time, or whose wall_time_limit or

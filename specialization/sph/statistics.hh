@@ -50,9 +50,10 @@ struct statistics_column {
   std::string name, meaning, unit;
 };
 
-/// The columns; with self-gravity (`gravity`) a potential energy column after the internal one.
+/// The columns; with self-gravity (`gravity`) a potential energy column after the internal one;
+/// an app's own columns (`extra`) last.
 template<int D>
-std::vector<statistics_column> statistics_columns(bool gravity = false) {
+std::vector<statistics_column> statistics_columns(bool gravity = false, const std::vector<statistics_column>& extra = {}) {
   static const char* axes[] = {"x", "y", "z"};
   std::vector<statistics_column> columns = {
     {"step", "step number", "1"},
@@ -75,16 +76,18 @@ std::vector<statistics_column> statistics_columns(bool gravity = false) {
                        "M L^2 T^-1"});
   columns.push_back({"mass", "mass of the fluid particles", "M"});
   columns.push_back({"mean_neighbours", "neighbours per particle, mean over all particles", "1"});
+  columns.insert(columns.end(), extra.begin(), extra.end());
   return columns;
 }
 
 /// The header: `description` lines, each column with its meaning and unit, then the column line.
 template<int D>
-std::string statistics_header(const std::vector<std::string>& description, bool gravity = false) {
+std::string statistics_header(const std::vector<std::string>& description, bool gravity = false,
+                              const std::vector<statistics_column>& extra = {}) {
   std::ostringstream out;
   for (const auto& line : description) out << "# " << line << "\n";
   out << "# columns (code units: L, M, T are the units of length, mass and time the parameters use):\n";
-  const auto columns = statistics_columns<D>(gravity);
+  const auto columns = statistics_columns<D>(gravity, extra);
   std::string names;
   for (std::size_t c = 0; c < columns.size(); ++c) {
     out << "# " << std::setw(3) << c + 1 << " " << columns[c].name << " [" << columns[c].unit
@@ -96,16 +99,17 @@ std::string statistics_header(const std::vector<std::string>& description, bool 
 }
 
 /// One row, every real with 17 significant digits (read back exactly); the potential energy with
-/// self-gravity (`gravity`, as in the header).
+/// self-gravity (`gravity`, as in the header); the values of an app's own columns (`extra`) last.
 template<int D>
 std::string statistics_line(long step, double time, double dt, const conserved_totals<D>& t, double mean_neighbours,
-                            bool gravity = false) {
+                            bool gravity = false, const std::vector<double>& extra = {}) {
   std::vector<double> values = {time, dt, t.kinetic, t.internal, t.boundary, t.total};
   if (gravity) values.insert(values.begin() + 4, t.potential);
   for (int k = 0; k < D; ++k) values.push_back(t.momentum[k]);
   for (int k = 0; k < angular_components<D>; ++k) values.push_back(t.angular_momentum[k]);
   values.push_back(t.mass);
   values.push_back(mean_neighbours);
+  values.insert(values.end(), extra.begin(), extra.end());
   char field[40];
   std::snprintf(field, sizeof field, "%8ld", step);
   std::string line = field;
