@@ -229,8 +229,9 @@ private:
                                   {"Dimension", ints{D}},
                                   {"Redshift", doubles{0}},
                                   {"Scale-factor", doubles{1}},
-                                  {"Code", std::string("FleCSPH-lite")},
-                                  {"RunName", run_.program},
+                                  // The layout's name, by which yt recognises it; the writer is in group Code.
+                                  {"Code", std::string("SWIFT")},
+                                  {"RunName", run_.program + " (FleCSPH-lite)"},
                                   {"NumPart_ThisFile", this_file},
                                   {"NumPart_Total", low},
                                   {"NumPart_Total_HighWord", high},
@@ -263,7 +264,16 @@ private:
                                        {"Kernel support radius over h", doubles{physics::kernel_support}},
                                        {"Adiabatic index", doubles{s.physics.eos.ideal.gamma}},
                                        {"Dimension", ints{D}}});
-    out.set_attributes("Parameters", detail::parameter_attributes(run_.parameters_text));
+    out.set_attributes("SubgridScheme", {});  // none, but yt opens it
+    // SWIFT's engine policies, which yt and pynbody take as the mark of a SWIFT snapshot.
+    out.set_attributes("Policy", {{"hydro", ints{1}}, {"self gravity", ints{s.physics.gravity.enabled}},
+                                  {"external gravity", ints{0}}, {"cosmological integration", ints{0}}});
+    // Our keys, and SWIFT's InitialConditions:periodic that yt reads (1 when any axis is periodic).
+    auto parameters = detail::parameter_attributes(run_.parameters_text);
+    const bool periodic = std::any_of(s.tree_settings.periodic.begin(), s.tree_settings.periodic.end(),
+                                      [](bool p) { return p; });
+    parameters.push_back({"InitialConditions:periodic", std::string(periodic ? "1" : "0")});
+    out.set_attributes("Parameters", parameters);
     out.set_attributes("Code", {{"Code", std::string("FleCSPH-lite")},
                                 {"Code Version", std::string(flecsi_lite::app::version())},
                                 {"Git Revision", std::string(flecsi_lite::app::git_describe())},
