@@ -32,6 +32,8 @@ H5PART_TO_SNAPSHOT = {
     ("du_dt",): "InternalEnergyRates",
     ("phi",): "Potentials",
 }
+# Wall particles are fixed: the snapshots hold no motion or heating of theirs.
+NOT_FOR_WALLS = {"Velocities", "Accelerations", "InternalEnergyRates"}
 
 
 def unit_exponents(name, dimension):
@@ -122,7 +124,7 @@ def read_h5part(path, step=None, with_units=True):
             continue
         values = np.column_stack([data[s] for s in sources]) if len(sources) > 1 else data[sources[0]]
         for selected, target in ((kind == 0, result.fluid), (kind == 1, result.walls)):
-            if selected.any():
+            if selected.any() and not (target is result.walls and name in NOT_FOR_WALLS):
                 chosen = values[selected]
                 target[name] = _with_units(chosen, unit_exponents(name, dimension), units) if with_units else chosen
     return result
