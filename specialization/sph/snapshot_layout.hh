@@ -14,6 +14,7 @@
 #include "flecsi_lite/io.hh"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
