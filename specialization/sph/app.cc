@@ -13,6 +13,7 @@ flecsi_lite::app::definition frame_definition(const app_definition& app) {
     physics_parameters(physics_defaults).declare(schema);
     run_parameters(run_defaults).declare(schema);
     statistics_parameters().declare(schema);
+    snapshot_parameters().declare(schema);
   };
   frame.files = app.file_defaults;
   frame.declare_options = app.declare_options;

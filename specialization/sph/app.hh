@@ -17,6 +17,8 @@
 #include "specialization/sph/particle_input.hh"
 #include "specialization/sph/particle_output.hh"
 #include "specialization/sph/restart.hh"
+#include "specialization/sph/snapshot_output.hh"
+#include "specialization/sph/snapshot_settings.hh"
 #include "specialization/sph/statistics.hh"
 
 #include "flecsi_lite/app.hh"
@@ -44,6 +46,8 @@ struct app_state : simulation<D> {
   io_settings files;
   double next_output = 0;  ///< simulation time of the next output
   std::unique_ptr<flecsi_lite::io::h5part_writer> writer;
+  snapshot_settings output_keys;                  ///< output_format and the unit system
+  std::unique_ptr<snapshot_series<D>> snapshots;  ///< with output_format snapshots or both
   /// Root attributes of the output that describe the problem (gamma, initial states, ...).
   flecsi_lite::io::run_state description;
   statistics_settings statistics_keys;  ///< statistics_file resolved ("auto" replaced; empty: none)
@@ -106,6 +110,7 @@ void configure(app_state<D>& s, const flecsi_lite::app::run_context& run) {
   s.files = flecsi_lite::app::file_parameters().read(p);
   s.parameters_text = p.resolved_text();
   s.statistics_keys = statistics_parameters().read(p);
+  s.output_keys = snapshot_parameters().read(p);
   const auto limits = flecsi_lite::app::run_limit_parameters().read(p);
   s.stop = {limits.wall_time_limit, flecsi_lite::app::resolved_stop_file(limits, s.files.output_file, s.program)};
   s.allowed_changes = flecsi_lite::app::restart_parameters().read(p).allow_parameter_changes;
@@ -119,6 +124,15 @@ void configure(app_state<D>& s, const flecsi_lite::app::run_context& run) {
                             {"restart_file", s.files.restart_file},
                             {"initial_data", s.files.initial_data},
                             {"used_parameters_file", app::used_parameters_file(s.program, p)}});
+  if (!writes_snapshots(s.output_keys) || s.files.output_file.empty()) return;
+  for (const auto& [key, path] : std::vector<std::pair<std::string, std::string>>{
+         {"checkpoint_file", s.files.checkpoint_file}, {"restart_file", s.files.restart_file},
+         {"initial_data", s.files.initial_data}, {"statistics_file", s.statistics_keys.file}})
+    if (names_snapshot_file(path, s.files.output_file, s.program))
+      throw flecsi_lite::runtime::parameter_error(
+        key + " = '" + path + "' is a snapshot or the index of output_file = '" + s.files.output_file +
+        "' (output_format = " + std::string(output_format_names().name(s.output_keys.format)) +
+        "): writing the snapshots would destroy it; give it another name");
 }
 
 /// What an app adds to the standard model: the domain (box and periodic axes of
@@ -136,7 +150,8 @@ template<int D>
 void write_output_step(app_state<D>& s) {
   s.output_due = s.time >= s.next_output;
   if (!s.output_due && !s.finished) return;
-  write_particles(*s.writer, s);
+  if (s.writer) write_particles(*s.writer, s);
+  if (s.snapshots) s.snapshots->write(s);
   if (s.output_due) s.next_output = s.files.output_every > 0 ? s.time + s.files.output_every : s.run.end_time;
 }
 
@@ -148,6 +163,17 @@ void write_output_step(app_state<D>& s) {
 template<int D>
 void open_output(app_state<D>& s) {
   if (s.files.output_file.empty()) return;
+  if (writes_snapshots(s.output_keys)) {
+    s.snapshots = std::make_unique<snapshot_series<D>>(
+      s.files.output_file, snapshot_run{s.program, s.parameters_text, s.output_keys.units});
+    if (s.restarted) s.snapshots->continue_series(s.time, s.output_due);
+    // A restart whose series has nothing before its step opens it with that step.
+    if (s.restarted && s.snapshots->written() == 0) s.snapshots->write(s);
+  }
+  if (!writes_h5part(s.output_keys)) {
+    if (!s.restarted) write_output_step(s);
+    return;
+  }
   using writer = flecsi_lite::io::h5part_writer;
   s.writer = std::make_unique<writer>(s.files.output_file, flecsi_lite::runtime::communicator(),
                                       s.restarted ? writer::mode::append : writer::mode::create);
@@ -328,11 +354,14 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
   m.action("analyze", "statistics", [](State& s) { detail::statistics_row<D>(s); }).after("conserved_quantities");
   m.action("analyze", "run_limits", [](State& s) { detail::check_run_limits<D>(s); }).before("conserved_quantities");
   auto output = m.action("output", "h5part", [](State& s) {
-    if (s.writer) detail::write_output_step<D>(s);
+    if (s.writer || s.snapshots) detail::write_output_step<D>(s);
   });
   auto checkpoint = m.action("output", "checkpoint", [](State& s) { detail::checkpoint<D>(s); });
   m.depends(checkpoint, output);
   m.action("finalize", "close_output", [](State& s) {
+    if (s.snapshots)
+      flecsi_lite::log::info() << s.program << ": " << s.snapshots->written() << " snapshots indexed in "
+                               << s.snapshots->index_path();
     if (!s.writer) return;
     s.writer->finish();  // renamed by commit_outputs(), after the app's checks
     flecsi_lite::log::info() << s.program << ": wrote " << s.writer->steps_written() << " steps to "
