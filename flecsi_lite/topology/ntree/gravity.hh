@@ -141,9 +141,12 @@ struct gravity_counts {
 ///
 /// The order of summation is part of the contract: for every group, one interaction list
 /// (depth-first from the root, children in node order; an accepted node is kept, an opened leaf
-/// gives its particles); then for each target of the group, sequentially, the accepted nodes in
-/// visit order (multipole_field of multipole.hh), then the particles in visit
-/// order through `near`, each term added to running sums that start at zero. The result thus
+/// gives its particles); then for each target of the group the accepted nodes in visit order
+/// (multipole_field's arithmetic), then the particles in visit order through `near` (or, beyond
+/// near_factor * max(h) with a margin, the Newtonian pair it equals there), each term added to
+/// running sums that start at zero. Targets are summed in blocks, one lane each (vectorised
+/// across targets, never within one target's sum), so a target's result is that of its own
+/// sequential sum. The result thus
 /// depends only on the visited nodes' data (bounds, centre, mass, h_max, quadrupole, children)
 /// and the particles' (x, m, h) in leaf order, not on threads or on where the tree came from.
 /// Groups run in parallel (dynamic schedule), each thread with its own interaction list.
@@ -156,17 +159,24 @@ gravity_counts gravity_walk(const gravity_sources<D>& sources,
   std::atomic<std::uint64_t> node_interactions{0}, particle_interactions{0};
   const quadrupole<D>* quadrupoles = options.quadrupole ? sources.quadrupoles : nullptr;
   flecsi_lite::forall(groups.size(), [&](std::size_t g) {
-    // One list per thread, kept between walks: no allocation once warm.
+    // One list and one block per thread, kept between walks: no allocation once warm.
     thread_local detail::gravity_list<D> list;
+    thread_local detail::target_block<D> block;
     const target_group<D>& group = groups[g];
     detail::build_gravity_list<D>(sources, group, options, quadrupoles, list);
-    for (std::uint32_t i = group.begin; i < group.end; ++i) {
-      point<D> a;
-      double phi;
-      detail::sum_gravity_list<D>(list, targets.x[i], targets.h ? targets.h[i] : 0.0, near, a,
-                                  phi);
-      if (acceleration) acceleration[i] = a;
-      if (potential) potential[i] = phi;
+    constexpr std::uint32_t width = detail::target_block<D>::width;
+    for (std::uint32_t first = group.begin; first < group.end; first += width) {
+      block.count = std::min(width, group.end - first);
+      for (std::uint32_t t = 0; t < block.count; ++t) {
+        for (int k = 0; k < D; ++k) block.x[k][t] = targets.x[first + t][k];
+        block.h[t] = targets.h ? targets.h[first + t] : 0.0;
+      }
+      detail::sum_gravity_list<D>(list, options.near_factor, near, block);
+      for (std::uint32_t t = 0; t < block.count; ++t) {
+        if (acceleration)
+          for (int k = 0; k < D; ++k) acceleration[first + t][k] = block.a[k][t];
+        if (potential) potential[first + t] = block.phi[t];
+      }
     }
     const std::uint64_t count = group.end - group.begin;
     node_interactions.fetch_add(count * list.nodes.size(), std::memory_order_relaxed);

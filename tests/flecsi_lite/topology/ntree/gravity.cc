@@ -387,7 +387,8 @@ TEST_CASE("the walk is its sequential definition, whatever the threads and group
     for (std::uint32_t i = group.begin; i < group.end; ++i) {
       nt::point<3> a;
       double phi;
-      nt::detail::sum_gravity_list<3>(list, r.f.set.x[i], r.f.set.h[i], spline_pair{}, a, phi);
+      nt::detail::sum_gravity_list<3>(list, r.f.set.x[i], r.f.set.h[i], options.near_factor, spline_pair{}, a,
+                                      phi);
       REQUIRE(a == parallel.a[i]);
       REQUIRE(phi == parallel.phi[i]);
     }
