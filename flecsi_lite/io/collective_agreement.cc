@@ -5,6 +5,12 @@
 
 namespace flecsi_lite::io {
 
+int rank_of(MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  return rank;
+}
+
 void raise_if_any(MPI_Comm comm, const std::optional<failure_record>& local) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);

@@ -13,6 +13,9 @@
 
 namespace flecsi_lite::io {
 
+/// This rank's number in `comm`.
+int rank_of(MPI_Comm comm);
+
 /// A failure seen by one rank, before the ranks agree on it.
 struct failure_record {
   failure kind = failure::system;

@@ -21,11 +21,6 @@
 namespace flecsi_lite::io {
 
 namespace {
-int rank_of(MPI_Comm comm) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  return rank;
-}
 int size_of(MPI_Comm comm) {
   int size = 1;
   MPI_Comm_size(comm, &size);

@@ -7,6 +7,7 @@
 #include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
 #include "flecsi_lite/io/hdf5/hdf5_errors.hh"
 #include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
+#include "flecsi_lite/io/hdf5/partial_file.hh"
 #include "flecsi_lite/io/output_path.hh"
 #include "flecsi_lite/io/particle_partition.hh"
 #include "flecsi_lite/runtime/log.hh"
@@ -18,29 +19,11 @@
 namespace flecsi_lite::io {
 
 namespace {
-int rank_of(MPI_Comm comm) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  return rank;
-}
-
 // Exact text of a value, for checking that every rank passes the same one.
 std::string fingerprint(const std::string& name, const attribute_value& value) {
   char real[40] = "";
   if (auto* d = std::get_if<double>(&value)) std::snprintf(real, sizeof real, "%a", *d);
   return name + '\0' + std::to_string(value.index()) + '\0' + (*real ? real : to_string(value));
-}
-
-// A failed data write or flush is a storage failure: afterwards the file is only emptied and
-// closed (see abandon()).
-void raise_marking_storage_failure(MPI_Comm comm, const std::optional<failure_record>& failed,
-                                   bool& storage_failed) {
-  try {
-    raise_if_any(comm, failed);
-  } catch (...) {
-    storage_failed = true;
-    throw;
-  }
 }
 } // namespace
 
@@ -122,35 +105,20 @@ void h5part_writer::abandon() noexcept {
   if (!is_open()) return;
   try {
     hdf5_quiet_scope quiet;
-    // A failed H5Fclose leaves HDF5 a half-closed file that crashes its clean-up in MPI_Finalize,
-    // so the close must not fail. After a failed write or flush (a full disk) it must not even be
-    // tried as it is: parallel HDF5 (1.10) then fails its metadata flush on the writing rank only,
-    // skips the sync point's broadcast there and leaves the other ranks waiting in it for ever. So
-    // the partial file, which cannot be completed, is emptied first (every rank agrees), which gives
-    // back the space the close needs, and removed afterwards. (libhdf5 1.10 may still print
-    // "infinite loop closing library" at exit: blocks its failed flush leaked; the exit is clean.)
-    int flushed = 0;
-    if (!storage_failed_) {
-      if (in_step()) {
-        // An unfinished step would look complete to a reader: unlink it.
-        step_group_.close();
-        H5Ldelete(file_.get(), h5part::step_group_name(steps_written_).c_str(), H5P_DEFAULT);
-      }
-      flushed = H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0;
-      MPI_Allreduce(MPI_IN_PLACE, &flushed, 1, MPI_INT, MPI_MIN, comm_);
-    }
-    std::error_code error;
-    if (!flushed) {
+    if (!storage_failed_ && in_step()) {
+      // An unfinished step would look complete to a reader: unlink it.
       step_group_.close();
-      if (rank_of(comm_) == 0) std::filesystem::resize_file(partial_path(), 0, error);
-      MPI_Barrier(comm_);
+      H5Ldelete(file_.get(), h5part::step_group_name(steps_written_).c_str(), H5P_DEFAULT);
     }
-    file_.close();
+    step_group_.close();
+    // The finished steps stay in the partial file when it could be flushed (partial_file.hh).
+    const bool flushed = close_unfinished_file(comm_, file_, partial_path(), storage_failed_);
     if (rank_of(comm_) != 0) return;
     if (flushed) {
       log::warn() << "h5part: '" << path_ << "' was not closed; its " << steps_written_
                   << " finished steps are in '" << partial_path() << "'";
     } else {
+      std::error_code error;
       std::filesystem::remove(partial_path(), error);
       log::warn() << "h5part: '" << path_ << "' was not closed and its temporary file could not be "
                   << "completed (disk full?): '" << partial_path() << "' removed, '" << path_ << "' unchanged";
@@ -337,36 +305,15 @@ void h5part_writer::end_step() {
 void h5part_writer::finish() {
   if (!is_open()) return;
   if (in_step()) end_step();
-  hdf5_quiet_scope quiet;
-  // Everything on disk before the close, so that a failure leaves the file open for abandon().
-  std::optional<failure_record> failed;
-  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0)
-    failed = failure_record{failure::file, "cannot flush '" + partial_path() + "'" + hdf5_reason()};
-  raise_marking_storage_failure(comm_, failed, storage_failed_);
-  if (file_.close() < 0)
-    failed = failure_record{failure::file, "cannot close '" + partial_path() + "'" + hdf5_reason()};
-  raise_if_any(comm_, failed);
+  // A failed flush leaves the file open for abandon().
+  finish_partial_file(comm_, file_, partial_path(), storage_failed_);
   committing_ = true;
 }
 
 void h5part_writer::commit() {
   if (!committing_) return;
-  std::optional<failure_record> failed;
-  // Only now, with every byte written by every rank, does the file take its final name; the
-  // final path is checked again, since it may have changed while the run wrote.
-  if (rank_of(comm_) == 0) {
-    std::error_code error;
-    try {
-      require_replaceable(path_);
-      std::filesystem::rename(partial_path(), path_, error);
-    } catch (const io_error& e) {
-      failed = failure_record{e.kind(), e.what()};
-    }
-    if (error)
-      failed = failure_record{failure::file, "cannot rename '" + partial_path() + "' to '" + path_ +
-                                               "': " + error.message()};
-  }
-  raise_if_any(comm_, failed);  // also keeps every rank here until the rename is done
+  // Only now, with every byte written by every rank, does the file take its final name.
+  rename_partial_file(comm_, partial_path(), path_);
   committing_ = false;
 }
 

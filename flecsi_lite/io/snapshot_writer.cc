@@ -1,11 +1,12 @@
 // Collective writer of GADGET/SWIFT-layout particle snapshots over parallel HDF5 (see
-// snapshot_writer.hh); the failure handling is h5part_writer's (collective_agreement.hh).
+// snapshot_writer.hh); the failure handling is h5part_writer's (hdf5/partial_file.hh).
 #include "flecsi_lite/io/snapshot_writer.hh"
 
 #include "flecsi_lite/io/collective_agreement.hh"
 #include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
 #include "flecsi_lite/io/hdf5/hdf5_errors.hh"
 #include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
+#include "flecsi_lite/io/hdf5/partial_file.hh"
 #include "flecsi_lite/io/output_path.hh"
 #include "flecsi_lite/io/particle_partition.hh"
 #include "flecsi_lite/runtime/log.hh"
@@ -18,12 +19,6 @@
 namespace flecsi_lite::io {
 
 namespace {
-int rank_of(MPI_Comm comm) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  return rank;
-}
-
 // The file and memory types of each kind of attribute array.
 template<class T>
 std::pair<hid_t, hid_t> attribute_types() {
@@ -87,15 +82,6 @@ bool valid_name(const std::string& name) {
   return !name.empty() && name != "." && name.find('/') == std::string::npos;
 }
 
-void raise_marking_storage_failure(MPI_Comm comm, const std::optional<failure_record>& failed, bool& storage_failed) {
-  try {
-    raise_if_any(comm, failed);
-  } catch (...) {
-    storage_failed = true;
-    throw;
-  }
-}
-
 hdf5_handle untimed_creation(hid_t class_id) {
   // No modification times: identical runs write identical files.
   auto creation = property_list_handle(H5Pcreate(class_id));
@@ -138,22 +124,10 @@ void snapshot_writer::abandon() noexcept {
   }
   if (!is_open()) return;
   try {
-    hdf5_quiet_scope quiet;
-    // As h5part_writer::abandon(): after a failed write the close must not flush (parallel HDF5
-    // would leave ranks waiting), so the file is emptied first; an unfinished snapshot is of no
-    // use to anyone, so it is removed in every case.
-    int flushed = 0;
-    if (!storage_failed_) {
-      flushed = H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0;
-      MPI_Allreduce(MPI_IN_PLACE, &flushed, 1, MPI_INT, MPI_MIN, comm_);
-    }
-    std::error_code error;
-    if (!flushed) {
-      if (rank_of(comm_) == 0) std::filesystem::resize_file(partial_path(), 0, error);
-      MPI_Barrier(comm_);
-    }
-    file_.close();
+    // An unfinished snapshot is of no use to anyone: removed in every case.
+    close_unfinished_file(comm_, file_, partial_path(), storage_failed_);
     if (rank_of(comm_) == 0) {
+      std::error_code error;
       std::filesystem::remove(partial_path(), error);
       log::warn() << "snapshot: '" << path_ << "' was not completed: '" << partial_path() << "' removed, '"
                   << path_ << "' unchanged";
@@ -248,34 +222,14 @@ void snapshot_writer::write_array(const std::string& group, const std::string& n
 
 void snapshot_writer::finish() {
   if (!is_open()) return;
-  hdf5_quiet_scope quiet;
-  // Everything on disk before the close, so that a failure leaves the file open for abandon().
-  std::optional<failure_record> failed;
-  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0)
-    failed = failure_record{failure::file, "cannot flush '" + partial_path() + "'" + hdf5_reason()};
-  raise_marking_storage_failure(comm_, failed, storage_failed_);
-  if (file_.close() < 0) failed = failure_record{failure::file, "cannot close '" + partial_path() + "'" + hdf5_reason()};
-  raise_if_any(comm_, failed);
+  // A failed flush leaves the file open for abandon().
+  finish_partial_file(comm_, file_, partial_path(), storage_failed_);
   committing_ = true;
 }
 
 void snapshot_writer::commit() {
   if (!committing_) return;
-  std::optional<failure_record> failed;
-  // The final path is checked again: it may have changed while the run wrote.
-  if (rank_of(comm_) == 0) {
-    std::error_code error;
-    try {
-      require_replaceable(path_);
-      std::filesystem::rename(partial_path(), path_, error);
-    } catch (const io_error& e) {
-      failed = failure_record{e.kind(), e.what()};
-    }
-    if (error)
-      failed = failure_record{failure::file, "cannot rename '" + partial_path() + "' to '" + path_ + "': " +
-                                               error.message()};
-  }
-  raise_if_any(comm_, failed);  // also keeps every rank here until the rename is done
+  rename_partial_file(comm_, partial_path(), path_);
   committing_ = false;
 }
 
