@@ -1,11 +1,15 @@
 #!/usr/bin/env python3
 # Summary of a flecsi_lite executor trace (Chrome trace JSON written with --trace FILE): per rank,
 # the overlapped fraction of communication time (time a copy is in flight while a task runs on
-# the same rank, over the time any copy is in flight), the idle time (no task running within the
+# the same rank, over the time any copy is in flight), also per phase (the copies grouped by the
+# first task that reads them: the forces phase is the copies the forces read), the idle time (no task running within the
 # run's span), and the critical path (walked back from the last launch to finish: at each launch,
 # the dependency or previous task on the compute track that finished last).
+# --check validates the file against the rules Perfetto's and chrome://tracing's JSON importers
+# apply (strict JSON, X events with ts/dur/pid/tid, slices on one track nested perfectly, named
+# processes and tracks) and exits 1 naming the first violations.
 #
-#   python3 scripts/trace_summary.py trace.json [--json]
+#   python3 scripts/trace_summary.py trace.json [--json] [--check]
 import argparse
 import json
 import sys
@@ -56,6 +60,55 @@ def load(path):
     return launches
 
 
+def format_problems(path, limit=10):
+    """Violations of the Trace Event Format as Perfetto imports it: "The Perfetto UI and trace
+    processor do not support overlapping B/E/X events ... events are only allowed to perfectly
+    nest" (perfetto.dev/docs/faq), so a slice that partly overlaps another of its track is lost."""
+    def reject_constant(name):
+        raise ValueError(f"non-JSON number {name}")
+    with open(path) as f:
+        data = json.load(f, parse_constant=reject_constant)
+    events = data.get("traceEvents") if isinstance(data, dict) else data
+    if not isinstance(events, list):
+        return ["no traceEvents list"]
+    problems, tracks, process_names, track_names = [], {}, set(), set()
+    for i, e in enumerate(events):
+        if not isinstance(e, dict) or not isinstance(e.get("ph"), str):
+            problems.append(f"event {i}: not an object with a 'ph' phase")
+            continue
+        if not isinstance(e.get("pid"), int) or not isinstance(e.get("tid", 0), int):
+            problems.append(f"event {i} ({e.get('name')}): pid and tid must be integers")
+            continue
+        if e["ph"] == "M":
+            if e.get("name") == "process_name":
+                process_names.add(e["pid"])
+            elif e.get("name") == "thread_name":
+                track_names.add((e["pid"], e["tid"]))
+            continue
+        if e["ph"] != "X":
+            continue
+        ts, dur = e.get("ts"), e.get("dur")
+        if not isinstance(e.get("name"), str) or not isinstance(ts, (int, float)) \
+                or not isinstance(dur, (int, float)) or dur < 0:
+            problems.append(f"event {i} ({e.get('name')}): an X event needs a name, ts and dur >= 0")
+            continue
+        tracks.setdefault((e["pid"], e["tid"]), []).append((ts, ts + dur, e["name"]))
+    for (pid, tid), slices in sorted(tracks.items()):
+        if pid not in process_names:
+            problems.append(f"process {pid} has no process_name")
+        if (pid, tid) not in track_names:
+            problems.append(f"track {tid} of process {pid} has no thread_name")
+        open_slices = []  # the enclosing slices of the current one, outermost first
+        for begin, end, name in sorted(slices, key=lambda s: (s[0], -s[1])):
+            while open_slices and open_slices[-1][1] <= begin:
+                open_slices.pop()
+            if open_slices and end > open_slices[-1][1]:
+                problems.append(f"process {pid} track {tid}: '{name}' [{begin}, {end}] partly overlaps "
+                                f"'{open_slices[-1][2]}' [{open_slices[-1][0]}, {open_slices[-1][1]}]")
+            open_slices.append((begin, end, name))
+    return problems[:limit] + ([f"... and {len(problems) - limit} more"] if len(problems) > limit else [])
+
+
 def is_task(launch):
     """Tasks compute; ghost copies and collectives ("ghost_copy", "reduction") communicate."""
     return launch["kind"] == "task" or (launch["kind"] == "failed" and launch["tid"] == 0)
@@ -101,6 +154,19 @@ def summarise(launches):
         copies = union([(e["begin"], e["end"]) for e in events if e["kind"] == "ghost_copy"])
         communication = union([(e["begin"], e["end"]) for e in events if not is_task(e)])
         copy_time, overlapped = length(copies), intersection(copies, tasks)
+        # The phase of a copy: the first task that reads it (depends on its sequence).
+        readers = {}
+        for e in sorted((e for e in events if is_task(e)), key=lambda e: e["begin"]):
+            for d in e["dependencies"]:
+                readers.setdefault(d, e["name"])
+        by_reader = {}
+        for e in events:
+            if e["kind"] == "ghost_copy":
+                by_reader.setdefault(readers.get(e["sequence"], "(no reader)"), []).append((e["begin"], e["end"]))
+        phases = {}
+        for name, intervals in by_reader.items():
+            flight = union(intervals)
+            phases[name] = {"copy_time": length(flight), "copy_overlapped": intersection(flight, tasks)}
         all_copy += copy_time
         all_overlap += overlapped
         ranks[rank] = {
@@ -109,6 +175,7 @@ def summarise(launches):
             "communication_time": length(communication),
             "communication_overlapped": intersection(communication, tasks),
             "compute_time": length(tasks), "idle_time": (stop - start) - length(tasks),
+            "copies_by_reader": dict(sorted(phases.items(), key=lambda kv: -kv[1]["copy_time"])),
         }
     path, path_rank = critical_path(launches)
     path_tasks = sum(e["end"] - e["begin"] for e in path if is_task(e))
@@ -131,7 +198,21 @@ def main():
     parser = argparse.ArgumentParser(description="Overlap, idle time and critical path of a flecsi_lite trace.")
     parser.add_argument("trace", help="Chrome trace JSON written with --trace FILE")
     parser.add_argument("--json", action="store_true", help="print the summary as JSON")
+    parser.add_argument("--check", action="store_true",
+                        help="validate the format as Perfetto and chrome://tracing import it; exit 1 on a violation")
     arguments = parser.parse_args()
+    if arguments.check:
+        try:
+            problems = format_problems(arguments.trace)
+        except (OSError, ValueError) as error:
+            print(f"trace_summary: cannot read '{arguments.trace}': {error}", file=sys.stderr)
+            return 2
+        for problem in problems:
+            print(f"trace_summary: {arguments.trace}: {problem}", file=sys.stderr)
+        if problems:
+            return 1
+        print(f"{arguments.trace}: valid Trace Event Format (perfectly nested tracks, named processes and tracks)")
+        return 0
     try:
         launches = load(arguments.trace)
     except (OSError, ValueError, KeyError) as error:
@@ -151,6 +232,9 @@ def main():
               f"copies in flight {r['copy_time']:.6f} s of which {100 * r['copy_overlapped_fraction']:.1f}% "
               f"overlapped, all communication {r['communication_time']:.6f} s "
               f"({r['communication_overlapped']:.6f} s overlapped)")
+        for name, p in list(r["copies_by_reader"].items())[:4]:
+            fraction = p["copy_overlapped"] / p["copy_time"] if p["copy_time"] > 0 else 0.0
+            print(f"  copies read first by {name}: {p['copy_time']:.6f} s in flight, {100 * fraction:.1f}% overlapped")
     c = s["critical_path"]
     print(f"critical path (rank {c['rank']}): {len(c['launches'])} launches over {c['span']:.6f} s: "
           f"tasks {c['task_time']:.6f} s, communication {c['communication_time']:.6f} s, "
