@@ -19,12 +19,6 @@
 
 namespace flecsph::sph {
 
-/// Total length of this rank's neighbour lists (for the mean neighbour count).
-template<int D>
-double neighbour_total(neighbours_ro<D> neighbours) {
-  return static_cast<double>(neighbours->lists.total());
-}
-
 /// The exact totals now (collective; waits for the launches they depend on).
 template<int D>
 conserved_totals<D> measure_conserved(simulation<D>& s) {
@@ -134,6 +128,14 @@ void run_summary(simulation<D>& s) {
                            << s.repeated_searches << " repeated searches; bytes per owned particle (rank 0): "
                            << std::setprecision(3) << bytes.fields << " in fields, " << bytes.neighbour_lists
                            << " in neighbour lists";
+  s.balance.settle();
+  if (s.balance.distributions > 0)
+    flecsi_lite::log::info() << "sph: balance (" << balance_names().name(s.physics.balance) << ", "
+                             << key_order_names().name(s.physics.key_order) << " keys) over "
+                             << s.balance.distributions << " distributions, max / mean per rank: work (neighbour "
+                             << "list entries) " << std::setprecision(4) << s.balance.work_mean() << " mean, "
+                             << s.balance.work_max << " largest; particles " << s.balance.count_mean() << " mean, "
+                             << s.balance.count_max << " largest";
   if (!s.physics.gravity.enabled) return;
   const double owned = static_cast<double>(std::max<std::size_t>(1, s.particles->owned_size()));
   flecsi_lite::log::info() << "sph: gravity in the last step (rank 0): " << std::setprecision(4)

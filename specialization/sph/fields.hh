@@ -91,6 +91,9 @@ struct fields {
   static inline const definition<double> distributed_h{"distributed_h", persist::restart()};
   static inline const definition<vector<D>> distributed_position{
     "distributed_position", persist::as("distributed_x", "distributed_y", "distributed_z").restart()};
+  // balance = work only: the weight of a particle in the next distribution, its neighbours at the
+  // last search (zero before the first: the sample sort then balances counts).
+  static inline const definition<double> work{"work"};
 };
 
 } // namespace flecsph::sph

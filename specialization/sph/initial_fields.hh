@@ -70,6 +70,9 @@ template<int D>
 void create_particles(simulation<D>& s, std::size_t local_count) {
   s.tree_settings.support = physics::kernel_support * (1.0 + s.physics.search_margin);
   s.tree_settings.ghost_reach_factor = 1.0 + s.physics.distribution_skin;
+  s.tree_settings.order = s.physics.key_order;
+  s.tree_settings.balancing = s.physics.balance;
+  s.tree_settings.work_weight = s.physics.balance == tree::balance::work ? &fields<D>::work : nullptr;
   s.neighbours.host() = {};
   s.particles = std::make_unique<particle_tree<D>>(s.tree_settings, local_count);
 }

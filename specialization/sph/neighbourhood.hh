@@ -56,6 +56,13 @@ using tracked_neighbourhood = flecsi_lite::tracked<neighbourhood<D>>;
 template<int D>
 using neighbours_ro = flecsi_lite::tracked_accessor<neighbourhood<D>, flecsi_lite::ro>;
 
+/// Total length of this rank's neighbour lists: the mean neighbour count, and the work of the pair
+/// tasks here (reduced over the ranks for the balance reports).
+template<int D>
+double neighbour_total(neighbours_ro<D> neighbours) {
+  return static_cast<double>(neighbours->lists.total());
+}
+
 /// A view of a neighbourhood for the inner loops: raw pointers, separations with images.
 template<int D>
 struct neighbour_walk {

@@ -44,6 +44,16 @@ inline distribution_slack measure_distribution_slack(ro<double> h, ro<double> dr
   return slack;
 }
 
+/// balance = work: each owned particle weighs its list length at the last search in the next
+/// distribution (its pair sums cost in proportion; seed section 2.3.3).
+template<int D>
+void measure_work(neighbours_ro<D> neighbours, wo<double> work) {
+  const auto& lists = neighbours->lists;
+  flecsi_lite::forall(work.size(), [&](std::size_t a) {
+    work(a) = a < lists.size() ? static_cast<double>(lists.count(a)) : 0.0;
+  }, "sph::measure_work");
+}
+
 /// After a distribution: the path lengths start again from zero, from the current h and position
 /// (the keys of this distribution follow from that position, for restarts).
 template<int D>

@@ -65,6 +65,10 @@ physics_block declare_physics(const physics_settings& defaults) {
   p.real("distribution_skin", &physics_settings::distribution_skin,
          "ghosts reach (1 + skin) times the search: distribute when used up")
     .range(0, 10);
+  p.choice("key_order", &physics_settings::key_order, key_order_names(),
+           "space-filling curve of the distribution (hilbert: compact domains, fewer ghosts)");
+  p.choice("balance", &physics_settings::balance, balance_names(),
+           "distribute equal particle counts, or equal work (neighbours at the last search)");
   p.boolean("gravity", member(&physics_settings::gravity, &gravity_settings::enabled),
             "self-gravity softened with the kernel (Price & Monaghan 2007), 3D without periodic axes");
   p.real("gravitational_constant", member(&physics_settings::gravity, &gravity_settings::constant),
@@ -90,6 +94,20 @@ physics_block declare_physics(const physics_settings& defaults) {
 const flecsi_lite::runtime::name_table<gravity_criterion>& gravity_criterion_names() {
   static const flecsi_lite::runtime::name_table<gravity_criterion> table{
     "gravity criterion", {{"geometric", gravity_criterion::geometric}, {"relative", gravity_criterion::relative}}};
+  return table;
+}
+
+const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::curve>& key_order_names() {
+  using flecsi_lite::topology::ntree::curve;
+  static const flecsi_lite::runtime::name_table<curve> table{
+    "key order", {{"hilbert", curve::hilbert}, {"morton", curve::morton}}};
+  return table;
+}
+
+const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::balance>& balance_names() {
+  using flecsi_lite::topology::ntree::balance;
+  static const flecsi_lite::runtime::name_table<balance> table{
+    "balance", {{"count", balance::count}, {"work", balance::work}}};
   return table;
 }
 

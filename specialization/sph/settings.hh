@@ -10,6 +10,7 @@
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
+#include "flecsi_lite/topology/ntree.hh"
 
 #include <cstdint>
 #include <string>
@@ -22,6 +23,10 @@ enum class gravity_criterion { geometric, relative };
 
 /// The parameter-file names of the criteria ("geometric", "relative").
 const flecsi_lite::runtime::name_table<gravity_criterion>& gravity_criterion_names();
+
+/// The parameter-file names of the key orders ("hilbert", "morton") and balances ("count", "work").
+const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::curve>& key_order_names();
+const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::balance>& balance_names();
 
 /// Self-gravity: softened with the SPH kernel (Price & Monaghan 2007) on the gravity tree, in 3D
 /// without periodic axes (no Ewald summation yet).
@@ -55,6 +60,12 @@ struct physics_settings {
   /// Ghosts are selected (1 + skin) times farther than the search reaches, so that the particles
   /// are distributed again only once their motion and the growth of h have used that room up.
   double distribution_skin = 0.5;
+  /// The space-filling curve that orders and distributes the particles (seed section 2.3.1):
+  /// Hilbert's domains are more compact than Morton's, so they need fewer ghosts.
+  flecsi_lite::topology::ntree::curve key_order = flecsi_lite::topology::ntree::curve::hilbert;
+  /// The ranks get equal particle counts, or equal work: each particle weighs its neighbours at the
+  /// last search (the seed's neighbour-based balancing, section 2.3.3, as FleCSPH offers).
+  flecsi_lite::topology::ntree::balance balance = flecsi_lite::topology::ntree::balance::count;
   gravity_settings gravity{};
 };
 

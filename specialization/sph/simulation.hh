@@ -10,6 +10,7 @@
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/topology/ntree.hh"
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +23,38 @@ namespace flecsph::sph {
 struct gravity_record {
   std::uint64_t node_interactions = 0, particle_interactions = 0;
   std::size_t imported_nodes = 0, imported_particles = 0;
+};
+
+/// The balance of the distributions of a run: max over mean per rank of the particles and of the
+/// work (list entries) of the search that follows each distribution. The work's reductions are
+/// futures, settled at the next distribution or the report, so the step does not wait for them.
+struct balance_record {
+  std::uint64_t distributions = 0;
+  double count_sum = 0, count_max = 0, work_sum = 0, work_max = 0;
+  double pending_count = 0;
+  flecsi_lite::future<double> pending_work_max, pending_work_total;  ///< valid while pending
+  bool pending = false;
+
+  void expect(double count_imbalance, flecsi_lite::future<double> most, flecsi_lite::future<double> total) {
+    settle();
+    pending_count = count_imbalance;
+    pending_work_max = std::move(most);
+    pending_work_total = std::move(total);
+    pending = true;
+  }
+  void settle() {
+    if (!pending) return;
+    pending = false;
+    const double mean = pending_work_total.get() / flecsi_lite::runtime::size();
+    const double work_imbalance = mean > 0 ? pending_work_max.get() / mean : 1.0;
+    ++distributions;
+    count_sum += pending_count;
+    work_sum += work_imbalance;
+    count_max = std::max(count_max, pending_count);
+    work_max = std::max(work_max, work_imbalance);
+  }
+  double count_mean() const { return distributions ? count_sum / double(distributions) : 1.0; }
+  double work_mean() const { return distributions ? work_sum / double(distributions) : 1.0; }
 };
 
 template<int D>
@@ -55,6 +88,7 @@ struct simulation {
   double started_time = 0;  ///< simulation time then
   double elapsed = 0;  ///< wall seconds since the cycle started
   gravity_record last_gravity;  ///< self-gravity only
+  balance_record balance;
 
   // Between the actions of one step.
   flecsi_lite::future<double> next_time_step;

@@ -101,8 +101,11 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
                          .get();
     redistribute = !ghosts_still_suffice(slack, p.settings().support, s.physics.distribution_skin);
   }
+  double count_imbalance = 0;
   if (redistribute) {
-    p.distribute();
+    if (s.physics.balance == tree::balance::work)  // the last lists' costs (none yet: counts)
+      flecsi_lite::execute<measure_work<D>>(s.neighbours, f::work(p));
+    count_imbalance = p.distribute().count_imbalance;
     flecsi_lite::execute<mark_distributed<D>>(f::smoothing_length()(p), f::position()(p), f::drift(p),
                                               f::distributed_h(p), f::distributed_position(p));
     ++s.distributions;
@@ -110,6 +113,10 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
     p.refresh_local_tree();
   }
   find_neighbours(p, s.neighbours);  // a task: after the refit, and after the last readers of the old lists
+  if (redistribute)
+    s.balance.expect(count_imbalance,
+                     flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::max>(s.neighbours),
+                     flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::sum>(s.neighbours));
 }
 
 /// Density and smoothing length; when some h outgrew the searched reach, searches again with the
