@@ -1,23 +1,16 @@
 """The surge front of one fluid dam-break run against another's (the 3D run periodic along the
 span against the 2D run at the same dx and h): exit 1 unless max |Z_a - Z_b| / Z_b over
-1 <= T <= 2.8 is at most BOUND. Reads the runs' .series.txt (apps/fluid/fluid.cc: the header
-gives L, dx and g; the columns t and the largest fluid x, the front being that plus dx/2).
+1 <= T <= 2.8 is at most BOUND. Reads the runs' .series.txt (apps/fluid/front_errors.py).
 
     check_fluid_fronts.py A.series.txt B.series.txt BOUND
 """
-import re
+import os
 import sys
 
 import numpy as np
 
-
-def front(path):
-    with open(path) as f:
-        header = f.readline()
-    found = {k: float(re.search(k + r" = ([0-9.eE+-]+)", header).group(1)) for k in ("L", "dx", "g")}
-    s = np.loadtxt(path)
-    L = found["L"]
-    return s[:, 0] * np.sqrt(2 * found["g"] / L), (s[:, 1] + 0.5 * found["dx"]) / L
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "apps", "fluid"))
+from front_errors import front  # noqa: E402  (T and Z / L of a run's series)
 
 
 def main():
