@@ -1,7 +1,8 @@
 // fluid: weakly compressible SPH for liquids (Tait EOS, continuity density with delta-SPH, laminar
 // or artificial viscosity, gravity, Adami et al. 2012 dummy walls) on four 2D problems: a still
 // tank, Poiseuille and Couette flow against their series solutions, and the dam break of Martin &
-// Moyce (1952) against the experiment's surge front (martin_moyce_1952.txt).
+// Moyce (1952) against the experiment's surge front (martin_moyce_1952.txt), also in 3D
+// (dimension = 3: the column spans a tank periodic along z).
 //
 //   mpirun -np 2 fluid apps/fluid/dam_break.par [--set particles=50] [--check-dam-break 0.1,0.01]
 #include "fluid_problem.hh"
@@ -32,13 +33,13 @@ using namespace flecsi_lite;
 namespace sph = flecsph::sph;
 namespace fl = flecsph::fluid;
 using fluid_app::problem_type;
-constexpr int D = 2;
 
 /// One row of the run's series (every analyze step).
 struct sample_row {
   double t, front, energy, density_deviation, speed, channel_error;
 };
 
+template<int D>
 struct fluid_run : fl::fluid_state<D> {
   fluid_app::problem problem;
   fluid_app::layout layout;
@@ -92,6 +93,7 @@ double elastic_energy(const flecsph::physics::tait& eos, double rho) {
   return eos.stiffness() / eos.reference_density * ((std::pow(x, 6) - 1) / 6 + (1 / x - 1));
 }
 
+template<int D>
 sample measure_task(sample_input in, sph::ro<sph::vector<D>> x, sph::ro<sph::vector<D>> v, sph::ro<double> m,
                     sph::ro<double> rho, sph::ro<double> P, sph::ro<sph::particle_kind> kind) {
   sample s;
@@ -116,13 +118,15 @@ sample measure_task(sample_input in, sph::ro<sph::vector<D>> x, sph::ro<sph::vec
   return s;
 }
 
-double channel_speed_scale(const fluid_run& s) { return s.layout.speed_scale; }
+template<int D>
+double channel_speed_scale(const fluid_run<D>& s) { return s.layout.speed_scale; }
 
-void measure(fluid_run& s) {
+template<int D>
+void measure(fluid_run<D>& s) {
   using f = sph::fields<D>;
   auto& p = *s.particles;
   const sample_input in{s.problem.type, s.time, s.problem.length, s.layout.dx, s.problem.lid_velocity, s.fluid};
-  const sample r = reduce<measure_task, sample_reduction>(in, f::position()(p), f::velocity(p), f::mass()(p),
+  const sample r = reduce<measure_task<D>, sample_reduction>(in, f::position()(p), f::velocity(p), f::mass()(p),
                                                           f::density(p), f::pressure(p), f::kind(p))
                      .get();
   const double error = r.channel_error / channel_speed_scale(s);
@@ -136,29 +140,41 @@ void measure(fluid_run& s) {
   }
 }
 
-void set_domain(fluid_run& s) {
+template<int D>
+void set_domain(fluid_run<D>& s) {
   const auto& l = s.layout;
-  if (!l.periodic_x) return;  // the tank: the box follows the particles
-  sph::tree::box<D> box;
   const double margin = double(l.layers + 2) * l.dx;
-  box.lo = {l.tank_lo[0], l.tank_lo[1] - margin};
-  box.hi = {l.tank_hi[0], l.tank_hi[1] + margin};
-  s.tree_settings.fixed_box = box;
-  s.tree_settings.periodic = {true, false};
+  sph::tree::box<D> box;
+  if constexpr (D == 3) {
+    // The 3D dam break: periodic along the span z, the box around the tank and its walls (the
+    // water stays below the column's height 2 L, inside the tank 3 L high, to T = 2.8).
+    box.lo = {l.tank_lo[0] - margin, l.tank_lo[1] - margin, l.tank_lo[2]};
+    box.hi = {l.tank_hi[0] + margin, l.tank_hi[1] + margin, l.tank_hi[2]};
+    s.tree_settings.fixed_box = box;
+    s.tree_settings.periodic = {false, false, true};
+  } else {
+    if (!l.periodic_x) return;  // the tank: the box follows the particles
+    box.lo = {l.tank_lo[0], l.tank_lo[1] - margin};
+    box.hi = {l.tank_hi[0], l.tank_hi[1] + margin};
+    s.tree_settings.fixed_box = box;
+    s.tree_settings.periodic = {true, false};
+  }
 }
 
+template<int D>
 void set_wall_velocities(const std::vector<sph::vector<D>>& values, sph::wo<sph::vector<D>> wall_velocity) {
   for (std::size_t a = 0; a < wall_velocity.size(); ++a) wall_velocity(a) = values[a];
 }
 
-void create(fluid_run& s) {
+template<int D>
+void create(fluid_run<D>& s) {
   set_domain(s);
   const auto all = fluid_app::particles_of(s.problem, s.layout, s.fluid);
   const auto block = io::block_slice(all.size(), runtime::rank(), runtime::size());
   sph::create_particles(s, block.count);
   sph::initial_fields(s, [&](std::size_t i, sph::initial_particle<D>& p) {
     const auto& q = all[block.offset + i];
-    p.x = {q.x[0], q.x[1]};
+    for (int k = 0; k < D; ++k) p.x[k] = q.x[k];
     p.id = block.offset + i;
     p.m = q.m;
     p.h = s.layout.h;
@@ -166,12 +182,14 @@ void create(fluid_run& s) {
     p.rho = q.rho;
   });
   std::vector<sph::vector<D>> walls(block.count);
-  for (std::size_t i = 0; i < block.count; ++i) walls[i] = {all[block.offset + i].wall_velocity[0], all[block.offset + i].wall_velocity[1]};
-  execute<set_wall_velocities>(walls, fl::fluid_fields<D>::wall_velocity(*s.particles)).wait();
+  for (std::size_t i = 0; i < block.count; ++i)
+    for (int k = 0; k < D; ++k) walls[i][k] = all[block.offset + i].wall_velocity[k];
+  execute<set_wall_velocities<D>>(walls, fl::fluid_fields<D>::wall_velocity(*s.particles)).wait();
 }
 
 /// The front Z/L (the largest fluid x plus half a spacing) at time T = t sqrt(2 g / L).
-double front_at(const fluid_run& s, double T) {
+template<int D>
+double front_at(const fluid_run<D>& s, double T) {
   const double scale = std::sqrt(-2 * s.fluid.body_force[1] / s.problem.length);
   for (std::size_t i = 1; i < s.series.size(); ++i) {
     const double T0 = s.series[i - 1].t * scale, T1 = s.series[i].t * scale;
@@ -190,7 +208,8 @@ struct dam_break_result {
   double largest_rise = 0;  ///< largest increase of the mechanical energy between samples, over |E0|
 };
 
-dam_break_result dam_break_errors(const fluid_run& s) {
+template<int D>
+dam_break_result dam_break_errors(const fluid_run<D>& s) {
   dam_break_result r;
   for (const auto& point : fluid_app::martin_moyce_front()) {
     if (point.T < 1 || point.T > 2.8) continue;
@@ -206,13 +225,15 @@ dam_break_result dam_break_errors(const fluid_run& s) {
   return r;
 }
 
-double largest_density_deviation(const fluid_run& s) {
+template<int D>
+double largest_density_deviation(const fluid_run<D>& s) {
   double d = 0;
   for (const auto& row : s.series) d = std::max(d, row.density_deviation);
   return d;
 }
 
-void report(fluid_run& s) {
+template<int D>
+void report(fluid_run<D>& s) {
   std::ostringstream line;
   line << std::scientific << std::setprecision(4) << s.program << ": "
        << fluid_app::problem_names().name(s.problem.type) << " at t = " << s.time << ", dx = " << s.layout.dx
@@ -265,7 +286,8 @@ std::vector<double> bounds(const runtime::options& opts, const std::string& name
   return values;
 }
 
-int check(const fluid_run& s, const runtime::options& opts) {
+template<int D>
+int check(const fluid_run<D>& s, const runtime::options& opts) {
   bool pass = true;
   const auto fail = [&](const std::string& what) {
     log::error() << s.program << ": check failed: " << what;
@@ -302,16 +324,19 @@ int check(const fluid_run& s, const runtime::options& opts) {
   return pass ? 0 : 1;
 }
 
+template<int D>
 int run(const app::run_context& context) {
-  fluid_run s;
+  fluid_run<D> s;
   sph::configure(s, context);
   s.problem = fluid_app::problem_parameters().read(context.parameters());
   s.fluid = fl::fluid_parameters().read(context.parameters());
   if (s.physics.adaptive_smoothing_length)
     throw runtime::parameter_error("fluid: adaptive_smoothing_length = true: the liquid keeps h = h_factor dx");
-  if (!s.files.restart_file.empty() || !s.files.initial_data.empty())
-    throw runtime::parameter_error("fluid: restart_file and initial_data are not supported (drho/dt and the walls' "
-                                   "velocities are in memory only)");
+  // A checkpoint holds drho/dt and the walls' own velocity (fluid_fields.hh); initial data would not.
+  if (!s.files.initial_data.empty())
+    throw runtime::parameter_error("fluid: initial_data = '" + s.files.initial_data +
+                                   "' is not supported (the walls' velocities and drho/dt are not in initial data; "
+                                   "restart_file continues a fluid run)");
   if (s.problem.type == problem_type::dam_break && !(s.fluid.body_force[1] < 0))
     throw runtime::parameter_error("fluid: dam_break needs gravity along -y (body_force_y < 0)");
   s.layout = fluid_app::layout_of(s.program, s.problem, s.fluid);
@@ -323,11 +348,11 @@ int run(const app::run_context& context) {
   }
   s.description = {{"length", s.problem.length}, {"dx", s.layout.dx}, {"rho0", s.fluid.eos.reference_density},
                    {"c0", s.fluid.eos.reference_sound_speed}, {"gravity", s.fluid.body_force[1]}};
-  auto m = fl::make_fluid_control_model<fluid_run>({set_domain, create});
-  m.action("initialize", "measure", measure).after("diagnostics");
-  m.action("analyze", "measure", measure).after("conserved_quantities");
-  m.action("finalize", "report", report);
-  return context.execute(m, s, [&context](const fluid_run& state) { return check(state, context.options()); });
+  auto m = fl::make_fluid_control_model<fluid_run<D>>({set_domain<D>, create<D>});
+  m.action("initialize", "measure", measure<D>).after("diagnostics");
+  m.action("analyze", "measure", measure<D>).after("conserved_quantities");
+  m.action("finalize", "report", report<D>);
+  return context.execute(m, s, [&context](const fluid_run<D>& state) { return check(state, context.options()); });
 }
 } // namespace
 
@@ -354,6 +379,8 @@ int main(int argc, char** argv) {
       .value("check-dam-break", "FRONT,RHO,RISE",
              "exit 1 unless the mean front error, max |rho/rho0 - 1| and the energy rise / |E0| are within them");
   };
-  definition.run = [](const app::run_context& context) { return run(context); };
+  definition.run = [](const app::run_context& context) {
+    return context.parameters().get<int>("dimension") == 3 ? run<3>(context) : run<2>(context);
+  };
   return sph::app_main(argc, argv, definition);
 }

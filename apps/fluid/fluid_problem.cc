@@ -3,6 +3,7 @@
 
 #include "specialization/physics/kernels.hh"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -23,7 +24,7 @@ namespace {
 rt::parameter_block<problem> declare() {
   rt::parameter_block<problem> p;
   p.choice("problem", &problem::type, problem_names(), "still_tank, poiseuille, couette or dam_break");
-  p.integer("dimension", &problem::dimension, "space dimension (2)").range(2, 2);
+  p.integer("dimension", &problem::dimension, "space dimension (2; 3 for the dam break)").range(2, 3);
   p.integer("particles", &problem::particles, "fluid particles across the reference length").range(4, 100000);
   p.real("length", &problem::length, "reference length: depth H, channel width L, column width L")
     .greater_than(0)
@@ -36,6 +37,7 @@ rt::parameter_block<problem> declare() {
   p.real("tank_width", &problem::tank_width, "still tank: width (0: 2 H)").range(0, 1e10);
   p.real("column_offset", &problem::column_offset, "shift of the fluid along x (0: at the left wall)")
     .range(-1e10, 1e10);
+  p.real("span", &problem::span, "3D dam break: periodic width along z (0: 7 dx)").range(0, 1e10);
   return p;
 }
 
@@ -54,6 +56,7 @@ const rt::parameter_block<problem>& problem_parameters() {
 
 layout layout_of(const std::string& program, const problem& p, flecsph::fluid::fluid_settings& fluid) {
   layout l;
+  l.dimension = p.dimension;
   const double L = p.length;
   l.dx = L / double(p.particles);
   l.h = p.h_factor * l.dx;
@@ -65,7 +68,11 @@ layout layout_of(const std::string& program, const problem& p, flecsph::fluid::f
                               text(double(l.layers) * l.dx) + " thick) is thinner than the kernel support 2 h = " +
                               text(support) + " (h_factor = " + text(p.h_factor) + "): at least " +
                               std::to_string(needed) + " layers");
-  const double g = std::sqrt(fluid.body_force[0] * fluid.body_force[0] + fluid.body_force[1] * fluid.body_force[1]);
+  if (p.dimension == 3 && p.type != problem_type::dam_break)
+    throw rt::parameter_error(program + ": dimension = 3 is for problem = dam_break only, not " +
+                              problem_names().name(p.type));
+  const double g = std::sqrt(fluid.body_force[0] * fluid.body_force[0] + fluid.body_force[1] * fluid.body_force[1] +
+                             fluid.body_force[2] * fluid.body_force[2]);
   const double nu = fluid.kinematic_viscosity();
   switch (p.type) {
   case problem_type::still_tank: {
@@ -79,6 +86,16 @@ layout layout_of(const std::string& program, const problem& p, flecsph::fluid::f
     l.fluid_lo = {p.column_offset, 0}, l.fluid_hi = {p.column_offset + L, 2 * L};
     l.tank_lo = {0, 0}, l.tank_hi = {4 * L, 3 * L};
     l.speed_scale = std::sqrt(2 * g * 2 * L);  // the front's speed, sqrt(2 g H) with H = 2 L
+    if (p.dimension == 3) {
+      // A whole number of spacings, so that the periodic lattice is uniform; the search needs
+      // a period above twice the interaction radius 2 h (ntree periodic reach).
+      const auto layers_z = std::max<std::int64_t>(1, std::llround((p.span > 0 ? p.span : 7 * l.dx) / l.dx));
+      l.tank_hi[2] = l.fluid_hi[2] = double(layers_z) * l.dx;
+      if (!(l.tank_hi[2] > 2 * support * (1 + 1e-9)))
+        throw rt::parameter_error(program + ": span = " + text(p.span) + " (" + std::to_string(layers_z) +
+                                  " spacings) is not wider than twice the kernel support 2 (2 h) = " +
+                                  text(2 * support) + ": the periodic images would overlap");
+    }
     break;
   case problem_type::poiseuille:
   case problem_type::couette: {
@@ -107,16 +124,22 @@ layout layout_of(const std::string& program, const problem& p, flecsph::fluid::f
 
 std::vector<particle> particles_of(const problem& p, const layout& l, const flecsph::fluid::fluid_settings& fluid) {
   std::vector<particle> out;
-  const double dx = l.dx, volume = dx * dx, rho0 = fluid.eos.reference_density;
+  const double dx = l.dx, volume = l.dimension == 3 ? dx * dx * dx : dx * dx, rho0 = fluid.eos.reference_density;
   const double g = -fluid.body_force[1];  // gravity along -y (hydrostatic start)
   const double depth = l.fluid_hi[1];
   const auto count = [dx](double lo, double hi) { return static_cast<std::int64_t>(std::llround((hi - lo) / dx)); };
+  // 2D: one z layer at z = 0; 3D: the 2D lattice repeated at z = (l + 1/2) dx across the span.
+  const std::int64_t nz = l.dimension == 3 ? count(l.tank_lo[2], l.tank_hi[2]) : 1;
+  const auto z_of = [&](std::int64_t layer) { return l.dimension == 3 ? l.tank_lo[2] + (double(layer) + 0.5) * dx : 0.0; };
+  const auto add = [&](double x, double y, double m, double rho, bool wall, double lid) {
+    for (std::int64_t layer = 0; layer < nz; ++layer) out.push_back({{x, y, z_of(layer)}, m, rho, wall, {lid, 0, 0}});
+  };
   const std::int64_t nx = count(l.fluid_lo[0], l.fluid_hi[0]), ny = count(l.fluid_lo[1], l.fluid_hi[1]);
   for (std::int64_t j = 0; j < ny; ++j)
     for (std::int64_t i = 0; i < nx; ++i) {
       const double x = l.fluid_lo[0] + (double(i) + 0.5) * dx, y = l.fluid_lo[1] + (double(j) + 0.5) * dx;
       const double rho = fluid.eos.density(fluid.eos.background_pressure + rho0 * g * (depth - y));
-      out.push_back({{x, y}, rho * volume, rho, false, {0, 0}});
+      add(x, y, rho * volume, rho, false, 0);
     }
   const double wall_mass = rho0 * volume;
   const std::int64_t n = l.layers;
@@ -125,19 +148,19 @@ std::vector<particle> particles_of(const problem& p, const layout& l, const flec
   // Bottom (and for channels top) layers, corners included.
   for (std::int64_t k = 0; k < n; ++k)
     for (std::int64_t i = first; i < last; ++i)
-      out.push_back({{l.tank_lo[0] + (double(i) + 0.5) * dx, l.tank_lo[1] - (double(k) + 0.5) * dx}, wall_mass, rho0, true, {0, 0}});
+      add(l.tank_lo[0] + (double(i) + 0.5) * dx, l.tank_lo[1] - (double(k) + 0.5) * dx, wall_mass, rho0, true, 0);
   if (l.top_wall) {
     const double lid = p.type == problem_type::couette ? p.lid_velocity : 0.0;
     for (std::int64_t k = 0; k < n; ++k)
       for (std::int64_t i = first; i < last; ++i)
-        out.push_back({{l.tank_lo[0] + (double(i) + 0.5) * dx, l.tank_hi[1] + (double(k) + 0.5) * dx}, wall_mass, rho0, true, {lid, 0}});
+        add(l.tank_lo[0] + (double(i) + 0.5) * dx, l.tank_hi[1] + (double(k) + 0.5) * dx, wall_mass, rho0, true, lid);
   }
   if (!l.periodic_x)
     for (std::int64_t j = 0; j < tank_ny; ++j)
       for (std::int64_t k = 0; k < n; ++k) {
         const double y = l.tank_lo[1] + (double(j) + 0.5) * dx;
-        out.push_back({{l.tank_lo[0] - (double(k) + 0.5) * dx, y}, wall_mass, rho0, true, {0, 0}});
-        out.push_back({{l.tank_hi[0] + (double(k) + 0.5) * dx, y}, wall_mass, rho0, true, {0, 0}});
+        add(l.tank_lo[0] - (double(k) + 0.5) * dx, y, wall_mass, rho0, true, 0);
+        add(l.tank_hi[0] + (double(k) + 0.5) * dx, y, wall_mass, rho0, true, 0);
       }
   return out;
 }
