@@ -5,9 +5,12 @@
 # A second run installs nothing and takes a few seconds.
 #
 # FLECSPH_INSTALL_CLIENTS=1 (scripts/run-tests.sh sets it) also installs the viewers that the
-# client tests (tests/clients) run on our H5Part files: ParaView's pvpython, with Xvfb since
-# Debian's ParaView renders through X even offscreen, and splash. About 150 MB to download and
-# 800 MB on disk, 2 minutes to install: the main job does without them.
+# client tests (tests/clients) run on our output: ParaView's pvpython, with Xvfb since Debian's
+# ParaView renders through X even offscreen, and splash (about 150 MB to download and 800 MB on
+# disk, 2 minutes to install); and the snapshot readers swiftsimio, yt, pynbody and unyt from PyPI
+# at the versions of scripts/snapshot-clients.txt, in a venv of /usr/bin/python3 at
+# .deps/snapshot-clients (about 250 MB to download and 900 MB on disk, 3 minutes; reinstalled only
+# when that file changes). The main job does without them.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -20,7 +23,7 @@ packages=(
   python3 python3-numpy python3-h5py python3-matplotlib
 )
 if [ "${FLECSPH_INSTALL_CLIENTS:-0}" = 1 ]; then
-  packages+=(python3-paraview xvfb splash)
+  packages+=(python3-paraview xvfb splash python3-venv)
 fi
 
 missing=()
@@ -61,4 +64,22 @@ else
   fi
   tar xzf "$tarball" -C "$deps"
   echo "install-deps: Kokkos source unpacked at $kokkos_src"
+fi
+
+# The snapshot readers (tests/clients/check_snapshots.py --client ...): a venv of Debian's Python
+# with exactly the pinned versions. The copy of the requirements is written last, so an
+# interrupted install is redone from scratch, never used half-made.
+if [ "${FLECSPH_INSTALL_CLIENTS:-0}" = 1 ]; then
+  requirements="$here/scripts/snapshot-clients.txt"
+  venv="$deps/snapshot-clients"
+  if cmp -s "$requirements" "$venv/installed-requirements.txt"; then
+    echo "install-deps: snapshot readers already in $venv"
+  else
+    echo "install-deps: installing the snapshot readers (swiftsimio, yt, pynbody, unyt) into $venv"
+    rm -rf "$venv"
+    mkdir -p "$deps"
+    /usr/bin/python3 -m venv "$venv"
+    "$venv/bin/python" -m pip install --quiet --no-cache-dir --disable-pip-version-check -r "$requirements"
+    cp "$requirements" "$venv/installed-requirements.txt"
+  fi
 fi
