@@ -5,7 +5,8 @@ N x 3, Velocities, Masses, SmoothingLengths, Densities, InternalEnergies, Pressu
 ParticleIDs, ...) to arrays; `time`, `dimension`, and `units` (grams, centimetres and seconds per
 code unit). With unyt installed, the arrays carry their units: from the snapshots' per-dataset
 attributes (U_M, U_L, U_t exponents and the Units group, as SWIFT writes them) or, for H5Part, from
-the same exponents (UNIT_EXPONENTS) and the unit keys in the file's `parameters` attribute.
+the same exponents (unit_exponents) and the file's unit attributes ("Unit mass in cgs (U_M)", ...;
+in files written before them, the unit keys of its `parameters` attribute).
 """
 import re
 from dataclasses import dataclass, field
@@ -113,9 +114,12 @@ def read_h5part(path, step=None, with_units=True):
         parameters = f.attrs.get("parameters", b"")
         parameters = parameters.decode() if isinstance(parameters, bytes) else str(parameters)
         dimension = int(f.attrs.get("dimension", 3))
-        units = {"mass": _parameter(parameters, "unit_mass_in_cgs", 1.0),
-                 "length": _parameter(parameters, "unit_length_in_cgs", 1.0),
-                 "time": _parameter(parameters, "unit_time_in_cgs", 1.0)}
+        # The unit system of the root attributes (SWIFT's names), or of the parameters in older files.
+        units = {}
+        for base, symbol in (("mass", "U_M"), ("length", "U_L"), ("time", "U_t")):
+            attribute = f"Unit {base} in cgs ({symbol})"
+            units[base] = float(f.attrs[attribute]) if attribute in f.attrs else \
+                _parameter(parameters, f"unit_{base}_in_cgs", 1.0)
         result = Particles(float(group.attrs.get("TimeValue", group.attrs.get("time", 0.0))), dimension, units)
         data = {k: group[k][()] for k in group.keys()}
     kind = data.get("kind", np.zeros(len(data["x"]), dtype=np.int32))
