@@ -110,6 +110,26 @@ def check_layout(path, time, data):
             require(group["Coordinates"].shape[1] == 3, f"{path}: Coordinates not N x 3")
 
 
+def check_h5part_units(h5part, snapshot):
+    """The H5Part file's unit attributes: the snapshot's unit system, and for each dataset the CGS
+    factor and expression of the snapshot dataset it belongs to."""
+    with h5py.File(h5part, "r") as f, h5py.File(snapshot, "r") as g:
+        for name, symbol in (("mass", "U_M"), ("length", "U_L"), ("time", "U_t")):
+            attribute = f"Unit {name} in cgs ({symbol})"
+            require(attribute in f.attrs and f.attrs[attribute] == g["Units"].attrs[attribute][0],
+                    f"{h5part}: root attribute '{attribute}' missing or not the snapshots' {name} unit")
+        for name, sources in SOURCES.items():
+            if name not in g["PartType0"]:
+                continue
+            dataset = g["PartType0"][name].attrs
+            for source in sources:
+                factor, units = f"{source} conversion factor to CGS", f"{source} CGS units"
+                require(factor in f.attrs and f.attrs[factor] == dataset[UNIT_ATTRIBUTES[8]][0],
+                        f"{h5part}: '{factor}' missing or not PartType0/{name}'s")
+                require(units in f.attrs and f.attrs[units] == dataset["Expression for physical CGS units"],
+                        f"{h5part}: '{units}' missing or not PartType0/{name}'s")
+
+
 def check_index(h5part, files, times):
     """<stem>.xdmf lists every snapshot, at its time, with its datasets."""
     index = os.path.splitext(h5part)[0] + ".xdmf"
@@ -233,6 +253,7 @@ def main():
         for path, (time, data) in zip(files, steps):
             check_layout(path, time, data)
         check_index(args.h5part, files, [time for time, _ in steps])
+        check_h5part_units(args.h5part, files[-1])
     if failures:
         sys.exit(f"{PROGRAM}: {len(failures)} failures")
     print(f"{PROGRAM}: {len(files)} snapshots of {args.h5part} {'load in ' + args.client if args.client else 'hold the H5Part values in the SWIFT layout, indexed'}")
