@@ -7,10 +7,9 @@
 # FLECSPH_INSTALL_CLIENTS=1 (scripts/run-tests.sh sets it) also installs the viewers that the
 # client tests (tests/clients) run on our output: ParaView's pvpython, with Xvfb since Debian's
 # ParaView renders through X even offscreen, and splash (about 150 MB to download and 800 MB on
-# disk, 2 minutes to install); and the snapshot readers swiftsimio, yt, pynbody and unyt from PyPI
-# at the versions of scripts/snapshot-clients.txt, in a venv of /usr/bin/python3 at
-# .deps/snapshot-clients (about 250 MB to download and 900 MB on disk, 3 minutes; reinstalled only
-# when that file changes). The main job does without them.
+# disk, 2 minutes to install), and python3-venv for the snapshot readers that
+# scripts/install-snapshot-clients.sh installs (scripts/build.sh runs it while the code builds).
+# The main job does without them.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -66,20 +65,3 @@ else
   echo "install-deps: Kokkos source unpacked at $kokkos_src"
 fi
 
-# The snapshot readers (tests/clients/check_snapshots.py --client ...): a venv of Debian's Python
-# with exactly the pinned versions. The copy of the requirements is written last, so an
-# interrupted install is redone from scratch, never used half-made.
-if [ "${FLECSPH_INSTALL_CLIENTS:-0}" = 1 ]; then
-  requirements="$here/scripts/snapshot-clients.txt"
-  venv="$deps/snapshot-clients"
-  if cmp -s "$requirements" "$venv/installed-requirements.txt"; then
-    echo "install-deps: snapshot readers already in $venv"
-  else
-    echo "install-deps: installing the snapshot readers (swiftsimio, yt, pynbody, unyt) into $venv"
-    rm -rf "$venv"
-    mkdir -p "$deps"
-    /usr/bin/python3 -m venv "$venv"
-    "$venv/bin/python" -m pip install --quiet --no-cache-dir --disable-pip-version-check -r "$requirements"
-    cp "$requirements" "$venv/installed-requirements.txt"
-  fi
-fi
