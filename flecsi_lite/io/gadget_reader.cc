@@ -2,6 +2,7 @@
 #include "flecsi_lite/io/gadget_reader.hh"
 
 #include "flecsi_lite/io/collective_agreement.hh"
+#include "flecsi_lite/io/hdf5/h5part_precheck.hh"
 #include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
 #include "flecsi_lite/io/hdf5/hdf5_errors.hh"
 #include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
@@ -43,7 +44,10 @@ bool gadget_reader::has_gadget_layout(const std::string& path, MPI_Comm comm) {
   if (rank_of(comm) == 0) {
     hdf5_quiet_scope quiet;
     std::error_code error;
-    if (std::filesystem::is_regular_file(path, error) && H5Fis_hdf5(path.c_str()) > 0) {
+    // A file whose metadata would crash libhdf5 (h5part_precheck.hh) is left to the H5Part
+    // reader, which reports it.
+    if (std::filesystem::is_regular_file(path, error) && H5Fis_hdf5(path.c_str()) > 0 &&
+        h5part::metadata_crash_check(path).empty()) {
       auto file = file_handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
       found = file && has_link(file.get(), "Header") && has_link(file.get(), "PartType0");
     }
@@ -78,6 +82,7 @@ gadget_reader::gadget_reader(std::string path, std::string group, std::map<std::
     std::error_code error;
     if (!std::filesystem::is_regular_file(path_, error)) throw file_error("cannot open '" + path_ + "': no such file");
     if (H5Fis_hdf5(path_.c_str()) <= 0) throw file_error("'" + path_ + "' is not an HDF5 file");
+    if (const std::string crash = h5part::metadata_crash_check(path_); !crash.empty()) throw file_error(crash);
   });
   auto access = mpio_file_access(comm_);
   file_ = file_handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, access.get()));

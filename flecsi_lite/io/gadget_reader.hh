@@ -38,7 +38,8 @@ public:
   ~gadget_reader() override;
 
   /// Collective: whether `path` is an HDF5 file with the groups Header and PartType0 (false for a
-  /// missing or non-HDF5 file, which the H5Part reader then reports).
+  /// missing or non-HDF5 file, or one whose metadata would crash libhdf5 (h5part_precheck.hh), which
+  /// the H5Part reader then reports).
   static bool has_gadget_layout(const std::string& path, MPI_Comm comm = runtime::communicator());
   /// Serial (one rank, serial HDF5): the text attribute `group`/`name` of the file `path`, or ""
   /// when the file, the group or the attribute is missing or not text (Code/Code of a snapshot).
