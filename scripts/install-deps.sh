@@ -5,9 +5,11 @@
 # A second run installs nothing and takes a few seconds.
 #
 # FLECSPH_INSTALL_CLIENTS=1 (scripts/run-tests.sh sets it) also installs the viewers that the
-# client tests (tests/clients) run on our H5Part files: ParaView's pvpython, with Xvfb since
-# Debian's ParaView renders through X even offscreen, and splash. About 150 MB to download and
-# 800 MB on disk, 2 minutes to install: the main job does without them.
+# client tests (tests/clients) run on our output: ParaView's pvpython, with Xvfb since Debian's
+# ParaView renders through X even offscreen, and splash (about 150 MB to download and 800 MB on
+# disk, 2 minutes to install), and python3-venv for the snapshot readers that
+# scripts/install-snapshot-clients.sh installs (scripts/build.sh runs it while the code builds).
+# The main job does without them.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -20,7 +22,7 @@ packages=(
   python3 python3-numpy python3-h5py python3-matplotlib
 )
 if [ "${FLECSPH_INSTALL_CLIENTS:-0}" = 1 ]; then
-  packages+=(python3-paraview xvfb splash)
+  packages+=(python3-paraview xvfb splash python3-venv)
 fi
 
 missing=()
@@ -62,3 +64,4 @@ else
   tar xzf "$tarball" -C "$deps"
   echo "install-deps: Kokkos source unpacked at $kokkos_src"
 fi
+

@@ -1,4 +1,5 @@
-"""What the plot scripts share: reading H5Part steps, their command line, the exact-solution program.
+"""What the plot scripts share: reading H5Part steps (through python/flecsph_lite), their command
+line, the exact-solution program.
 
 apps/sod/plot_sod.py and apps/sedov/plot_sedov.py put this folder on sys.path and import it; a
 reader and a figure are all a new plot script has to add.
@@ -10,34 +11,29 @@ import os
 import subprocess
 import sys
 
-import h5py
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))  # the package, installed or not
+import flecsph_lite  # noqa: E402
 DEFAULT_EXACT = os.path.join(HERE, "..", "..", "build", "apps", "exact", "exact_solution")
 
 
 def step_indices(path, program):
     """The k of every Step#k group of an H5Part file, in increasing order."""
-    with h5py.File(path, "r") as f:
-        indices = sorted(int(k[5:]) for k in f.keys() if k.startswith("Step#"))
+    indices = flecsph_lite.h5part_steps(path)
     if not indices:
         sys.exit(f"{program}: {path} holds no Step#N group")
     return indices
 
 
 def read_step(path, step, program):
-    """Returns (time, {dataset: array}, root attributes) of Step#step, the last step when None."""
-    indices = step_indices(path, program)
-    step = indices[-1] if step is None else step
-    if step not in indices:
-        sys.exit(f"{program}: {path} has no Step#{step} (steps: Step#{indices[0]} .. Step#{indices[-1]})")
-    with h5py.File(path, "r") as f:
-        group = f[f"Step#{step}"]
-        data = {k: group[k][()] for k in group.keys()}
-        time = float(group.attrs.get("TimeValue", group.attrs.get("time", 0.0)))
-        attributes = {k: f.attrs[k] for k in f.attrs.keys()}
-    return time, data, attributes
+    """Returns (time, {dataset: array}, root attributes) of Step#step, the last step when None
+    (python/flecsph_lite's reader, the one every script and test reads our files with)."""
+    try:
+        return flecsph_lite.read_h5part_step(path, step)
+    except ValueError as error:
+        sys.exit(f"{program}: {error}")
 
 
 def number(attributes, key, default):

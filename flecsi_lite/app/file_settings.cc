@@ -62,7 +62,7 @@ runtime::parameter_block<file_settings> file_parameters(const file_settings& def
   files.file("restart_file", &file_settings::restart_file,
              "continue the run saved in this checkpoint (none: start at t = 0)");
   files.file("initial_data", &file_settings::initial_data,
-             "H5Part file of the initial particles (none: the problem's own)");
+             "H5Part file or SWIFT-format initial conditions (Header, PartType0) of the initial particles (none: the problem's own)");
   files.integer("initial_data_step", &file_settings::initial_data_step, "Step#k of initial_data to read (-1: the last)")
     .at_least(-1);
   files.check([](const file_settings& f) {

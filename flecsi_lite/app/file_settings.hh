@@ -15,7 +15,7 @@ struct file_settings {
   std::string checkpoint_file;  ///< replaced at each checkpoint, and written when a run stops early
   long checkpoint_every = 0;    ///< steps between checkpoints; 0: none
   std::string restart_file;     ///< continue the run of this checkpoint
-  std::string initial_data;     ///< H5Part file of the initial particles
+  std::string initial_data;     ///< H5Part file or SWIFT-format initial conditions of the initial particles
   long initial_data_step = -1;  ///< its Step#k; -1: the last
 };
 

@@ -55,9 +55,14 @@ void write_registered_fields(topology_base& topology, const std::vector<register
 
 void read_registered_fields(topology_base& topology, const std::vector<registered_field>& fields,
                             const io::h5part_reader& in, std::int64_t step, role which) {
+  read_registered_fields(topology, fields, io::h5part_step_columns(in, step), which);
+}
+
+void read_registered_fields(topology_base& topology, const std::vector<registered_field>& fields,
+                            const io::column_source& in, role which) {
   if (which != role::initial && which != role::restart)
     throw std::logic_error("fields are read as role::initial or role::restart data");
-  const io::slice block = in.block(step);
+  const io::slice block = in.block();
   if (topology.owned_size() != block.count)
     throw std::logic_error("reading " + std::to_string(block.count) + " entities into " +
                            std::to_string(topology.owned_size()) + " owned ones");
@@ -70,20 +75,20 @@ void read_registered_fields(topology_base& topology, const std::vector<registere
     for (int k = 0; k < f.components; ++k) {
       const std::string& name = f.datasets[k];
       component_read r{id, k, std::nullopt};
-      if (required || in.has_dataset(step, name)) {
+      if (required || in.has_column(name)) {
         // Checked values are read as reals, as the rule sees them; the others in their own type.
-        if (f.persistence.rule()) r.values = read_converted<double>(in, step, name);
+        if (f.persistence.rule()) r.values = read_converted<double>(in, name);
         else
           r.values = std::visit(
             [&](const auto& empty) -> value_buffer {
-              return read_converted<typename std::decay_t<decltype(empty)>::value_type>(in, step, name);
+              return read_converted<typename std::decay_t<decltype(empty)>::value_type>(in, name);
             },
             f.no_values());
       }
       reads.push_back(std::move(r));
     }
   }
-  const std::string where = describe_step(in, step);
+  const std::string where = in.where();
   io::agree(in.communicator(), [&] {
     for (const component_read& r : reads) {
       const registered_field& f = fields[r.field];

@@ -5,7 +5,8 @@ N x 3, Velocities, Masses, SmoothingLengths, Densities, InternalEnergies, Pressu
 ParticleIDs, ...) to arrays; `time`, `dimension`, and `units` (grams, centimetres and seconds per
 code unit). With unyt installed, the arrays carry their units: from the snapshots' per-dataset
 attributes (U_M, U_L, U_t exponents and the Units group, as SWIFT writes them) or, for H5Part, from
-the same exponents (UNIT_EXPONENTS) and the unit keys in the file's `parameters` attribute.
+the same exponents (unit_exponents) and the file's unit attributes ("Unit mass in cgs (U_M)", ...;
+in files written before them, the unit keys of its `parameters` attribute).
 """
 import re
 from dataclasses import dataclass, field
@@ -103,21 +104,43 @@ def _parameter(text, key, default):
     return float(match.group(1)) if match else default
 
 
+def h5part_steps(path):
+    """The k of every Step#k group of an H5Part file, in increasing order (Step#10 after Step#9)."""
+    with h5py.File(path, "r") as f:
+        return sorted(int(k[5:]) for k in f.keys() if k.startswith("Step#"))
+
+
+def read_h5part_step(path, step=None):
+    """(time, {dataset: array}, {root attribute: value}) of Step#step as the file holds them, under
+    the H5Part names (x, rho, kind, ...); the last step when None. ValueError for a file without
+    steps or without that step."""
+    steps = h5part_steps(path)
+    if not steps:
+        raise ValueError(f"{path} holds no Step#N group")
+    step = steps[-1] if step is None else step
+    if step not in steps:
+        raise ValueError(f"{path} has no Step#{step} (steps: Step#{steps[0]} .. Step#{steps[-1]})")
+    with h5py.File(path, "r") as f:
+        group = f[f"Step#{step}"]
+        data = {k: group[k][()] for k in group.keys()}
+        time = float(group.attrs.get("TimeValue", group.attrs.get("time", 0.0)))
+        attributes = {k: f.attrs[k] for k in f.attrs.keys()}
+    return time, data, attributes
+
+
 def read_h5part(path, step=None, with_units=True):
     """Step#step of an H5Part file (the last when None), under the snapshot names."""
-    with h5py.File(path, "r") as f:
-        steps = sorted(int(k[5:]) for k in f.keys() if k.startswith("Step#"))
-        if not steps:
-            raise ValueError(f"{path} holds no Step#N group")
-        group = f[f"Step#{steps[-1] if step is None else step}"]
-        parameters = f.attrs.get("parameters", b"")
-        parameters = parameters.decode() if isinstance(parameters, bytes) else str(parameters)
-        dimension = int(f.attrs.get("dimension", 3))
-        units = {"mass": _parameter(parameters, "unit_mass_in_cgs", 1.0),
-                 "length": _parameter(parameters, "unit_length_in_cgs", 1.0),
-                 "time": _parameter(parameters, "unit_time_in_cgs", 1.0)}
-        result = Particles(float(group.attrs.get("TimeValue", group.attrs.get("time", 0.0))), dimension, units)
-        data = {k: group[k][()] for k in group.keys()}
+    time, data, attributes = read_h5part_step(path, step)
+    parameters = attributes.get("parameters", b"")
+    parameters = parameters.decode() if isinstance(parameters, bytes) else str(parameters)
+    dimension = int(attributes.get("dimension", 3))
+    # The unit system of the root attributes (SWIFT's names), or of the parameters in older files.
+    units = {}
+    for base, symbol in (("mass", "U_M"), ("length", "U_L"), ("time", "U_t")):
+        attribute = f"Unit {base} in cgs ({symbol})"
+        units[base] = float(attributes[attribute]) if attribute in attributes else \
+            _parameter(parameters, f"unit_{base}_in_cgs", 1.0)
+    result = Particles(time, dimension, units)
     kind = data.get("kind", np.zeros(len(data["x"]), dtype=np.int32))
     for sources, name in H5PART_TO_SNAPSHOT.items():
         if not all(s in data for s in sources):

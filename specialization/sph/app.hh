@@ -20,6 +20,7 @@
 #include "specialization/sph/snapshot_output.hh"
 #include "specialization/sph/snapshot_settings.hh"
 #include "specialization/sph/statistics.hh"
+#include "specialization/sph/swift_initial_data.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/control.hh"
@@ -65,9 +66,11 @@ struct app_state : simulation<D> {
   /// restart from this step keeps the step in the series only then.
   bool output_due = false;
   /// Called by the frame (run_context::execute) once the run and its checks have passed: only
-  /// then does the output, complete since "finalize", replace an earlier file of its name.
+  /// then does the output, complete since "finalize", replace an earlier file of its name, and
+  /// are the snapshots an earlier run left beyond this run's series removed.
   void commit_outputs() {
     if (writer) writer->commit();
+    if (snapshots) snapshots->remove_stale_snapshots();
   }
 };
 
@@ -183,6 +186,8 @@ void open_output(app_state<D>& s) {
   s.writer->set_attribute("gamma", s.physics.eos.ideal.gamma);
   s.writer->set_attribute("ranks", static_cast<std::int64_t>(flecsi_lite::runtime::size()));
   for (const auto& [name, value] : s.description) s.writer->set_attribute(name, value);
+  for (const auto& [name, value] : h5part_unit_attributes<D>(s.output_keys.units, s.physics.gravity.enabled))
+    s.writer->set_attribute(name, value);
   if (!s.restarted) return write_output_step(s);
   if (s.writer->steps_written() == 0) {
     write_particles(*s.writer, s);  // the restart step opens a new series; the cadence stays the checkpoint's
@@ -193,9 +198,23 @@ void open_output(app_state<D>& s) {
                            << (dropped ? ", " + std::to_string(dropped) + " later steps dropped" : std::string());
 }
 
+/// initial_data: an H5Part file (its step initial_data_step) or SWIFT-format initial conditions
+/// (a file with the groups Header and PartType0, swift_initial_data.hh).
 template<int D>
 void read_initial_particles(app_state<D>& s) {
-  const flecsi_lite::io::h5part_reader in(s.files.initial_data);
+  const std::string& path = s.files.initial_data;
+  if (flecsi_lite::io::gadget_reader::has_gadget_layout(path)) {
+    if (s.files.initial_data_step != -1)
+      throw flecsi_lite::runtime::parameter_error(
+        "initial_data_step = " + std::to_string(s.files.initial_data_step) + " chooses a step of an H5Part file, "
+        "but initial_data = '" + path + "' holds SWIFT-format initial conditions (one set of particles): "
+        "remove initial_data_step");
+    const auto count = read_swift_initial_data<D>(s, path, s.output_keys.units);
+    flecsi_lite::log::info() << s.program << ": " << count << " initial particles from '" << path
+                             << "' (SWIFT-format initial conditions)";
+    return;
+  }
+  const flecsi_lite::io::h5part_reader in(path);
   const auto step = read_particles(s, in, s.files.initial_data_step);
   flecsi_lite::log::info() << s.program << ": " << in.particle_count(step) << " initial particles from "
                            << describe_input_step(in, step);

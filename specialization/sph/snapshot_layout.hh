@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flecsph::sph {
@@ -112,6 +113,27 @@ inline flecsi_lite::io::snapshot_attributes unit_attributes(const unit_system& u
           {"Conversion factor to CGS (not including cosmological corrections)", doubles{factor}},
           {"Conversion factor to physical CGS (including cosmological corrections)", doubles{factor}},
           {"Description", q.description}};
+}
+
+/// The units in the root attributes of the H5Part output: SWIFT's names of the base units
+/// ("Unit mass in cgs (U_M)", "Unit length in cgs (U_L)", "Unit time in cgs (U_t)") and, for each
+/// dataset of the output, "<dataset> conversion factor to CGS" (one code unit in CGS) and
+/// "<dataset> CGS units" (cgs_expression, e.g. "U_M U_L^-3  [ g cm^-3 ]"). Walls share the fluid's.
+template<int D>
+std::vector<std::pair<std::string, flecsi_lite::io::attribute_value>> h5part_unit_attributes(const unit_system& u,
+                                                                                             bool gravity) {
+  std::vector<std::pair<std::string, flecsi_lite::io::attribute_value>> out = {
+    {"Unit mass in cgs (U_M)", u.mass_in_cgs},
+    {"Unit length in cgs (U_L)", u.length_in_cgs},
+    {"Unit time in cgs (U_t)", u.time_in_cgs}};
+  for (const auto& q : snapshot_quantities<D>(false, gravity)) {
+    if (q.name == "Accelerations") continue;  // ax ay az are checkpoint data, not output
+    for (const auto& source : q.sources) {
+      out.push_back({source + " conversion factor to CGS", cgs_factor(u, q.units)});
+      out.push_back({source + " CGS units", cgs_expression(q.units)});
+    }
+  }
+  return out;
 }
 
 /// The Units (and InternalCodeUnits) group: SWIFT's io_write_unit_system.

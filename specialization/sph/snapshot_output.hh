@@ -172,6 +172,32 @@ public:
     for (std::uint64_t k = 0; k < kept; ++k) paths_.push_back(path(static_cast<std::int64_t>(k)));
   }
 
+  /// Once the run has passed its checks (rank 0; the others do nothing): removes the snapshots
+  /// `<stem>_NNNN.hdf5` an earlier run of this name left after the last one this run wrote
+  /// (numbered on without a gap, each a FleCSPH-lite snapshot, Code/Code; anything else stops the
+  /// removal and is named), so that no stale file passes for part of this series, and names them.
+  /// A failed or interrupted run never gets here, so it removes nothing.
+  void remove_stale_snapshots() {
+    if (flecsi_lite::runtime::rank() != 0) return;
+    for (std::int64_t k = written();; ++k) {
+      const std::string file = path(k);
+      std::error_code error;
+      if (!std::filesystem::is_regular_file(file, error)) return;
+      if (flecsi_lite::io::gadget_reader::text_attribute(file, "Code", "Code") != "FleCSPH-lite") {
+        flecsi_lite::log::warn() << run_.program << ": '" << file << "' follows this run's snapshots but is not a "
+                                 << "FleCSPH-lite snapshot: left in place";
+        return;
+      }
+      if (!std::filesystem::remove(file, error) || error) {
+        flecsi_lite::log::warn() << run_.program << ": cannot remove the stale snapshot '" << file
+                                 << "' of an earlier run: " << error.message();
+        return;
+      }
+      flecsi_lite::log::info() << run_.program << ": removed '" << file
+                               << "', a snapshot of an earlier run beyond this series";
+    }
+  }
+
   /// Collective: the next snapshot at s.time, renamed into place, then the index.
   void write(simulation<D>& s) {
     flecsi_lite::wait_all();

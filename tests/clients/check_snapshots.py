@@ -110,6 +110,26 @@ def check_layout(path, time, data):
             require(group["Coordinates"].shape[1] == 3, f"{path}: Coordinates not N x 3")
 
 
+def check_h5part_units(h5part, snapshot):
+    """The H5Part file's unit attributes: the snapshot's unit system, and for each dataset the CGS
+    factor and expression of the snapshot dataset it belongs to."""
+    with h5py.File(h5part, "r") as f, h5py.File(snapshot, "r") as g:
+        for name, symbol in (("mass", "U_M"), ("length", "U_L"), ("time", "U_t")):
+            attribute = f"Unit {name} in cgs ({symbol})"
+            require(attribute in f.attrs and f.attrs[attribute] == g["Units"].attrs[attribute][0],
+                    f"{h5part}: root attribute '{attribute}' missing or not the snapshots' {name} unit")
+        for name, sources in SOURCES.items():
+            if name not in g["PartType0"]:
+                continue
+            dataset = g["PartType0"][name].attrs
+            for source in sources:
+                factor, units = f"{source} conversion factor to CGS", f"{source} CGS units"
+                require(factor in f.attrs and f.attrs[factor] == dataset[UNIT_ATTRIBUTES[8]][0],
+                        f"{h5part}: '{factor}' missing or not PartType0/{name}'s")
+                require(units in f.attrs and f.attrs[units] == dataset["Expression for physical CGS units"],
+                        f"{h5part}: '{units}' missing or not PartType0/{name}'s")
+
+
 def check_index(h5part, files, times):
     """<stem>.xdmf lists every snapshot, at its time, with its datasets."""
     index = os.path.splitext(h5part)[0] + ".xdmf"
@@ -131,42 +151,91 @@ def check_index(h5part, files, times):
                     require(f[dataset].shape == shape, f"{index}: {item.text} is {f[dataset].shape}, not {shape}")
 
 
+# pynbody's names of the SWIFT datasets (pynbody/snapshot/swift.py); the others keep theirs.
+PYNBODY_NAMES = {"Coordinates": "pos", "Velocities": "vel", "Masses": "mass", "Densities": "rho",
+                 "SmoothingLengths": "smooth", "InternalEnergies": "u", "Pressures": "p", "ParticleIDs": "iord"}
+
+
+def cgs_unit(attributes, separator):
+    """The dataset's CGS unit from its U_M, U_L, U_t exponents: "g*cm**-3" (separator "*")."""
+    powers = [(symbol, float(attributes[f"U_{base} exponent"][0])) for symbol, base in (("g", "M"), ("cm", "L"), ("s", "t"))]
+    text = separator.join(f"{symbol}**{power:g}" for symbol, power in powers if power != 0)
+    return text or None
+
+
+def client_arrays(client, path):
+    """{dataset: (values in CGS as numpy, the client's unit)} of PartType0 as the client loads them."""
+    with h5py.File(path, "r") as f:
+        # Those the H5Part output holds (not Accelerations, which yt 4.4 loads without units).
+        names = {name: dict(f["PartType0"][name].attrs) for name in f["PartType0"] if name in SOURCES}
+    arrays = {}
+    if client == "swiftsimio":
+        import swiftsimio
+        snapshot = swiftsimio.load(path)
+        for name, attributes in names.items():
+            values = getattr(snapshot.gas, re.sub(r"(?<=[a-z])(?=[A-Z])", "_", name).lower())
+            unit = cgs_unit(attributes, "*")
+            arrays[name] = (np.asarray(values.to_value(unit) if unit else values), str(values.units))
+    elif client == "yt":
+        import yt
+        dataset = yt.load(path)
+        require(type(dataset).__name__ == "SwiftDataset", f"yt read {path} as {type(dataset).__name__}")
+        everything = dataset.all_data()
+        for name, attributes in names.items():
+            values = everything["PartType0", "Mass" if name == "Masses" else name]
+            unit = cgs_unit(attributes, "*")
+            if unit and values.units.is_dimensionless:
+                # yt 4.4 gives units only to the fields its SWIFT frontend knows (not
+                # InternalEnergyRates, SoundSpeeds): the file's values, in code units.
+                arrays[name] = (np.asarray(values) * float(attributes[UNIT_ATTRIBUTES[8]][0]), "no unit in yt")
+                continue
+            arrays[name] = (np.asarray(values.to_value(unit) if unit else values), str(values.units))
+    elif client == "pynbody":
+        import pynbody
+        snapshot = pynbody.load(path)
+        require(type(snapshot).__name__ == "SwiftSnap", f"pynbody read {path} as {type(snapshot).__name__}")
+        for name, attributes in names.items():
+            values = snapshot.gas[PYNBODY_NAMES.get(name, name)]
+            unit = cgs_unit(attributes, " ")
+            arrays[name] = (np.asarray(values.in_units(unit) if unit else values), str(values.units))
+    return arrays
+
+
 def check_client(client, path, data):
-    """The real reader loads the last snapshot with the H5Part step's values and units."""
+    """The real reader loads the last snapshot: every PartType0 dataset it holds, converted to CGS
+    by the reader from the file's units, equals the H5Part step's values times their CGS factor
+    (bit for bit in code units of 1 g, 1 cm, 1 s)."""
     try:
         importlib.import_module(client)
     except ImportError as error:
         print(f"{PROGRAM}: {client} is not installed here ({error}): skipped")
         sys.exit(SKIP)
     kind = data.get("kind", np.zeros(len(data["x"]), dtype=np.int32))
-    rho = data["rho"][kind == 0]
-    if client == "swiftsimio":
-        import swiftsimio
-        snapshot = swiftsimio.load(path)
-        densities = snapshot.gas.densities
-        require(np.array_equal(np.asarray(densities), rho), "swiftsimio: gas densities differ from rho")
-        require(str(snapshot.gas.coordinates.units) == "cm", f"swiftsimio: coordinates in {snapshot.gas.coordinates.units}")
-        dimension = int(snapshot.metadata.dimension[0]) if np.ndim(snapshot.metadata.dimension) else int(snapshot.metadata.dimension)
-        print(f"{PROGRAM}: swiftsimio: {snapshot.metadata.n_gas} gas particles at t = {snapshot.metadata.time}, "
-              f"densities in {densities.units}, {dimension}D")
-    elif client == "yt":
+    arrays = client_arrays(client, path)
+    with h5py.File(path, "r") as f:
+        factors = {name: float(f["PartType0"][name].attrs[UNIT_ATTRIBUTES[8]][0]) for name in f["PartType0"]}
+    compared = []
+    for name, (values, unit) in sorted(arrays.items()):
+        sources = SOURCES.get(name)
+        if sources is None or not all(s in data for s in sources):
+            continue  # Accelerations: not in the H5Part output
+        expected = np.column_stack([data[s] for s in sources]) if len(sources) > 1 else data[sources[0]]
+        expected = expected[kind == 0]
+        if np.issubdtype(expected.dtype, np.floating):
+            expected = expected * factors[name]
+        same = values.shape == expected.shape and (np.array_equal(values, expected) or (
+            factors[name] != 1 and np.allclose(values, expected, rtol=1e-14, atol=0)))
+        require(same, f"{client}: PartType0/{name} ({unit}) differs from the H5Part {sources} in CGS")
+        compared.append(f"{name} [{unit}]")
+    require(len(compared) >= 8, f"{client}: only {len(compared)} datasets compared")
+    print(f"{PROGRAM}: {client} loads {path}: {len(kind[kind == 0])} gas particles; equal to the H5Part step: "
+          + ", ".join(compared))
+    if client == "yt":
         import yt
-        dataset = yt.load(path)
-        require(type(dataset).__name__ == "SwiftDataset", f"yt read {path} as {type(dataset).__name__}")
-        loaded = dataset.all_data()["PartType0", "Densities"]
-        require(np.array_equal(np.asarray(loaded), rho), "yt: PartType0 Densities differ from rho")
         picture = os.path.splitext(path)[0] + "_yt_projection.png"
-        plot = yt.ProjectionPlot(dataset, "z", ("gas", "density"))
-        plot.save(picture)
+        yt.ProjectionPlot(yt.load(path), "z", ("gas", "density")).save(picture)
         require(os.path.getsize(picture) > 0, f"yt wrote no {picture}")
-        print(f"{PROGRAM}: yt: SwiftDataset at t = {dataset.current_time}, {len(loaded)} gas particles, "
-              f"density in {loaded.units}; projection {picture}")
-    elif client == "pynbody":
-        import pynbody
-        snapshot = pynbody.load(path)
-        require(type(snapshot).__name__ == "SwiftSnap", f"pynbody read {path} as {type(snapshot).__name__}")
-        require(np.array_equal(np.asarray(snapshot.gas["rho"]), rho), "pynbody: gas rho differs from the H5Part rho")
-        print(f"{PROGRAM}: pynbody: SwiftSnap, {len(snapshot.gas)} gas particles, rho in {snapshot.gas['rho'].units}")
+        print(f"{PROGRAM}: yt: projection of ('gas', 'density') in {picture}")
 
 
 def main():
@@ -184,6 +253,7 @@ def main():
         for path, (time, data) in zip(files, steps):
             check_layout(path, time, data)
         check_index(args.h5part, files, [time for time, _ in steps])
+        check_h5part_units(args.h5part, files[-1])
     if failures:
         sys.exit(f"{PROGRAM}: {len(failures)} failures")
     print(f"{PROGRAM}: {len(files)} snapshots of {args.h5part} {'load in ' + args.client if args.client else 'hold the H5Part values in the SWIFT layout, indexed'}")
