@@ -32,7 +32,7 @@ struct bench_state : sph::simulation<D> {
   long warm_up_steps = 1, timed_steps = 10;
   double start = 0, stop = 0;  ///< MPI_Wtime at the end of the warm-up and of the timed steps
   std::clock_t cpu_start = 0, cpu_stop = 0;  ///< CPU time of this process (all its threads), same
-  std::uint64_t distributions_before = 0, repeated_searches_before = 0;
+  std::uint64_t distributions_before = 0, repeated_searches_before = 0, searches_before = 0;
 };
 
 /// The keys of the sedov app from `path`, then `overrides`; the benchmark uses the problem and
@@ -60,6 +60,9 @@ double kernel_neighbours(sph::neighbours_ro<D> neighbours_object, sph::ro_with_g
   }
   return count;
 }
+
+/// Entries of this rank's kept lists (every pair within their searched reach, kept over steps).
+double kept_entries(sph::neighbours_ro<D> neighbours) { return static_cast<double>(neighbours->kept.total()); }
 
 /// The value of option `name`, a whole number of at least 1.
 long count_option(const runtime::options& opts, const std::string& name) {
@@ -90,6 +93,7 @@ void benchmark_clock(bench_state& s) {
     timers::clear();
     s.distributions_before = s.distributions;
     s.repeated_searches_before = s.repeated_searches;
+    s.searches_before = s.searches;
     s.start = MPI_Wtime();
     s.cpu_start = std::clock();
   } else if (s.step == s.warm_up_steps + s.timed_steps) {
@@ -111,6 +115,7 @@ void report(bench_state& s) {
   const double cpu = max_over_ranks(static_cast<double>(s.cpu_stop - s.cpu_start) / CLOCKS_PER_SEC);
   const auto rows = timers::summarize();  // before the measurements below add their own timers
   const double list_entries = reduce<sph::neighbour_total<D>, reduction::sum>(s.neighbours).get();
+  const double kept = reduce<kept_entries, reduction::sum>(s.neighbours).get();
   const double in_kernel =
     reduce<kernel_neighbours, reduction::sum>(s.neighbours, f::position()(p), f::smoothing_length()(p)).get();
   const sph::memory_use bytes = sph::measure_memory(s);
@@ -125,14 +130,21 @@ void report(bench_state& s) {
               particles / per_step);
   std::printf("  CPU time per step (largest over ranks, all threads of a rank) %.4f s: %.2f cores busy per rank\n",
               cpu / static_cast<double>(s.timed_steps), cpu / seconds);
-  std::printf("  neighbours per particle: %.1f within 2 h (kernel), %.1f in the lists (reach %.3g max(h_a, h_b))\n",
-              in_kernel / particles, list_entries / particles, s.neighbours.host().reach);
+  const auto& n = s.neighbours.host();
+  std::printf("  neighbours per particle: %.1f within 2 h (kernel), %.1f in the lists (reach %.3g max(h_a, h_b)), "
+              "%.1f in the kept lists (searched with reach %.3g max(h_a, h_b): list_skin %.3g)\n",
+              in_kernel / particles, list_entries / particles, n.reach, kept / particles, n.list_reach,
+              s.physics.list_skin);
   std::printf("  bytes per owned particle (largest over ranks): %.0f fields + %.0f neighbour lists = %.0f; "
               "besides, %.0f in the local tree and search workspaces\n",
               field_bytes, list_bytes, field_bytes + list_bytes, tree_bytes);
-  std::printf("  during the timed steps: %llu distributions, %llu repeated searches\n",
+  const auto searches = s.searches - s.searches_before;
+  std::printf("  during the timed steps: %llu distributions, %llu repeated searches, %llu neighbour searches "
+              "(a list lives %.2f steps)\n",
               static_cast<unsigned long long>(s.distributions - s.distributions_before),
-              static_cast<unsigned long long>(s.repeated_searches - s.repeated_searches_before));
+              static_cast<unsigned long long>(s.repeated_searches - s.repeated_searches_before),
+              static_cast<unsigned long long>(searches),
+              searches ? double(s.timed_steps) / double(searches) : double(s.timed_steps));
   std::printf("  time per step by timer (largest over ranks; 'ntree::distribute <phase>' rows are parts of "
               "'ntree::distribute'):\n");
   std::vector<timers::summary_row> sorted(rows.begin(), rows.end());

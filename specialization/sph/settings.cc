@@ -65,6 +65,9 @@ physics_block declare_physics(const physics_settings& defaults) {
   p.real("distribution_skin", &physics_settings::distribution_skin,
          "ghosts reach (1 + skin) times the search: distribute when used up")
     .range(0, 10);
+  p.real("list_skin", &physics_settings::list_skin,
+         "neighbour lists reach (1 + skin) times the search: search again when used up")
+    .range(0, 10);
   p.boolean("gravity", member(&physics_settings::gravity, &gravity_settings::enabled),
             "self-gravity softened with the kernel (Price & Monaghan 2007), 3D without periodic axes");
   p.real("gravitational_constant", member(&physics_settings::gravity, &gravity_settings::constant),

@@ -55,6 +55,10 @@ struct physics_settings {
   /// Ghosts are selected (1 + skin) times farther than the search reaches, so that the particles
   /// are distributed again only once their motion and the growth of h have used that room up.
   double distribution_skin = 0.5;
+  /// Neighbour lists are searched (1 + skin) times farther than the search reach and kept over
+  /// the steps until the particles' motion and the growth of h have used that room up
+  /// (list_reuse.hh); 0 keeps them only while nothing moves or grows.
+  double list_skin = 0.1;
   gravity_settings gravity{};
 };
 
