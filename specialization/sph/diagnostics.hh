@@ -19,7 +19,8 @@
 
 namespace flecsph::sph {
 
-/// Total length of this rank's neighbour lists (for the mean neighbour count).
+/// Total length of this rank's neighbour lists (for the mean neighbour count; with list_skin > 0
+/// the lists kept over steps, which are longer by their skin).
 template<int D>
 double neighbour_total(neighbours_ro<D> neighbours) {
   return static_cast<double>(neighbours->lists.total());

@@ -25,28 +25,25 @@ namespace tree = flecsi_lite::topology::ntree;
 
 /// Vocabulary: particle a is a TARGET (owned here); each of its NEIGHBOURS b is seen as the image
 /// x_b + shift, so that the separation is r_ab = x_a - (x_b + shift). The lists hold, for every
-/// owned a, exactly the b with |r_ab| < reach * max(h_a, h_b) for the positions and h values they
-/// were pruned with (the exact pair criterion of the ntree search), in ascending (key, id, shift)
-/// order: sums over them do not depend on the rank count. They are pruned at every step from the
-/// KEPT lists, searched with list_reach = reach (1 + list_skin) at listed_x, listed_h and kept
-/// over the steps while they still hold every such pair (list_reuse.hh; Verlet 1967): pruning
-/// keeps the order, so the lists are those a search at the current positions would give.
+/// owned a, at least every b with |r_ab| < reach * max(h_a, h_b) for the current positions and h
+/// values, in ascending (key, id, shift) order of the last distribution: sums over them do not
+/// depend on the rank count. They are searched with list_reach = reach (1 + list_skin) at the
+/// positions listed_x and h listed_h and kept over the steps while that still holds
+/// (list_reuse.hh; Verlet 1967). The pair tasks skip the entries beyond the kernel support, so a
+/// sum takes the same pairs in the same order as over the lists of a search now.
 /// Each entry packs b with its shift code (ntree::shift_storage::packed): 4 bytes per entry.
 template<int D>
 struct neighbourhood {
   tree::neighbour_lists lists;  ///< offsets per owned particle, packed entries (b, shift code)
   std::array<vector<D>, tree::shift_code_count<D>> shift_table{};  ///< displacement per shift code
-  double reach = 2.0;  ///< search radius in units of h (>= the kernel support 2)
+  double reach = 2.0;       ///< the reach the lists hold, in units of h (>= the kernel support 2)
+  double list_reach = 2.0;  ///< the reach they were searched with (>= reach)
+  std::vector<vector<D>> listed_x;  ///< position of each owned particle at the search
+  std::vector<double> listed_h;     ///< its h then
   /// The owned targets whose lists hold owned particles only (a periodic image of an owned
   /// particle is owned data), and the others, whose lists hold a ghost; each ascending, together
-  /// every target once. Filled with the lists (prune_lists).
+  /// every target once. Filled with the lists (split_targets).
   std::vector<std::uint32_t> interior, boundary;
-
-  tree::neighbour_lists kept;  ///< searched with list_reach, pruned into `lists` at every step
-  double list_reach = 2.0;     ///< in units of h (>= reach)
-  std::vector<vector<D>> listed_x;  ///< position of each owned particle at the search of `kept`
-  std::vector<double> listed_h;     ///< its h then
-  std::vector<std::uint8_t> within;  ///< pruning workspace: 1 per kept entry within reach
 
   std::size_t size() const { return lists.size(); }
   /// The targets of a pair task's launch, chosen by its ghost privilege: without ghost access
@@ -54,18 +51,14 @@ struct neighbourhood {
   const std::vector<std::uint32_t>& targets(flecsi_lite::privilege ghost) const {
     return ghost == flecsi_lite::na ? interior : boundary;
   }
-  /// Mean number of neighbours per target (itself included).
+  /// Mean number of list entries per target (itself included).
   double mean_count() const { return size() ? double(lists.total()) / double(size()) : 0.0; }
-  /// Memory held (allocated room included): both lists, the positions and h of the search, the
-  /// pruning workspace and the target sets.
+  /// Memory held (allocated room included): the lists, the positions and h of the search and
+  /// the target sets.
   std::size_t bytes() const {
-    const auto list_bytes = [](const tree::neighbour_lists& l) {
-      return l.offsets.capacity() * sizeof(std::size_t) + l.neighbours.capacity() * sizeof(std::uint32_t) +
-             l.shifts.capacity() * sizeof(tree::shift_code);
-    };
-    return list_bytes(lists) + list_bytes(kept) + listed_x.capacity() * sizeof(vector<D>) +
-           listed_h.capacity() * sizeof(double) + within.capacity() +
-           (interior.capacity() + boundary.capacity()) * sizeof(std::uint32_t);
+    return lists.offsets.capacity() * sizeof(std::size_t) + lists.neighbours.capacity() * sizeof(std::uint32_t) +
+           lists.shifts.capacity() * sizeof(tree::shift_code) + listed_x.capacity() * sizeof(vector<D>) +
+           listed_h.capacity() * sizeof(double) + (interior.capacity() + boundary.capacity()) * sizeof(std::uint32_t);
   }
 };
 
@@ -112,24 +105,42 @@ struct neighbour_walk {
 inline constexpr flecsi_lite::dynamic_schedule target_schedule{256};
 
 /// Gives back the room of `v` beyond a quarter more than its size: the lists of the first search
-/// (from the initial guess of h) or of a larger skin would otherwise hold memory for good.
+/// (from the initial guess of h) would otherwise hold memory for good.
 template<class T>
 void release_spare_room(std::vector<T>& v) {
   if (v.capacity() > v.size() + v.size() / 4) v.shrink_to_fit();
 }
 
-/// The search task: fills the kept lists of `out` from the local tree's search over owned
-/// targets (symmetric criterion, reach `support` (1 + list_skin)), and the positions and h it
-/// searched with (the tree's sorted copies, current after a build or refit). The tree keeps its
-/// search workspaces, hence rw. prune_neighbours makes the lists the pair tasks read.
+/// Splits the targets of `n` into interior and boundary: a target is interior when every entry
+/// of its list is an owned particle (storage index below the number of targets, the owned count).
+template<int D>
+void split_targets(neighbourhood<D>& n) {
+  const std::size_t owned = n.size();
+  std::vector<std::uint8_t> needs_ghosts(owned);
+  const neighbour_walk<D> walk(n);
+  flecsi_lite::forall(owned, [&](std::size_t a) {
+    bool ghost = false;
+    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end && !ghost; ++j) ghost = walk.neighbour(j) >= owned;
+    needs_ghosts[a] = ghost;
+  }, "sph::split_targets");
+  n.interior.clear();
+  n.boundary.clear();
+  for (std::size_t a = 0; a < owned; ++a)
+    (needs_ghosts[a] ? n.boundary : n.interior).push_back(static_cast<std::uint32_t>(a));
+}
+
+/// The search task: fills `out` from the local tree's search over owned targets (symmetric
+/// criterion, reach `support` (1 + list_skin)), with the positions and h it searched with (the
+/// tree's sorted copies, current after a build or refit). The tree keeps its search workspaces,
+/// hence rw.
 template<int D>
 void search_neighbours(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
-                       typename tracked_neighbourhood<D>::template accessor<flecsi_lite::rw> out, double support,
+                       typename tracked_neighbourhood<D>::template accessor<flecsi_lite::wo> out, double support,
                        double list_skin, tree::domain<D> space) {
   const double list_reach = support * (1 + list_skin);
-  local->find_neighbours(tree::interaction::symmetric, list_reach, space, out->kept, {},
+  local->find_neighbours(tree::interaction::symmetric, list_reach, space, out->lists, {},
                          tree::shift_storage::packed);
-  release_spare_room(out->kept.neighbours);
+  release_spare_room(out->lists.neighbours);
   const auto table = space.shift_table();
   for (std::size_t c = 0; c < table.size(); ++c)
     for (int k = 0; k < D; ++k) out->shift_table[c][k] = table[c][k];
@@ -145,91 +156,15 @@ void search_neighbours(typename flecsi_lite::tracked<tree::local_tree<D>>::templ
     out->listed_x[a] = x[sorted[a]];
     out->listed_h[a] = h[sorted[a]];
   }, "sph::search_neighbours::listed");
+  split_targets(*out);
 }
 
-/// The pruning task: `lists` = the entries of `kept` with |r_ab| < reach max(h_a, h_b) at the
-/// current positions and h, by the search's own pair criterion in its floating-point steps
-/// (image x_b + shift, squared distance summed axis by axis, max of the squared radii), so that
-/// when the kept lists hold every such pair the result is bit for bit the lists a search now would
-/// give; then the interior / boundary split: a target is interior when every neighbour is owned
-/// (storage index below the number of targets, the owned count).
-template<int D>
-void prune_lists(typename tracked_neighbourhood<D>::template accessor<flecsi_lite::rw> object,
-                 ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h) {
-  neighbourhood<D>& n = *object;
-  const tree::neighbour_lists& kept = n.kept;
-  const std::size_t owned = kept.size();
-  const double support = n.reach;
-  n.within.resize(kept.total());
-  release_spare_room(n.within);
-  std::vector<std::size_t>& offsets = n.lists.offsets;
-  offsets.resize(owned + 1);
-  offsets[0] = 0;
-  std::vector<std::uint8_t> needs_ghosts(owned);
-  // Everything the loops read is held in locals: the byte stores of `within` may alias any
-  // memory, and would otherwise make the compiler reload it after every entry.
-  const vector<D>* const shifts = n.shift_table.data();
-  std::uint8_t* const within = n.within.data();
-  const std::uint32_t* const entries = kept.neighbours.data();
-  const std::size_t* const kept_offsets = kept.offsets.data();
-  const vector<D>* const xs = x.data();
-  const double* const hs = h.data();
-  std::size_t* const counts = offsets.data() + 1;
-  std::uint8_t* const ghosts = needs_ghosts.data();
-  flecsi_lite::forall(owned, [=](std::size_t a) {
-    const vector<D> x_a = xs[a];
-    const double radius_a = support * hs[a], own = radius_a * radius_a;
-    std::size_t count = 0;
-    bool ghost = false;
-    for (std::size_t j = kept_offsets[a], end = kept_offsets[a + 1]; j < end; ++j) {
-      const std::uint32_t entry = entries[j];
-      const std::size_t b = tree::packed_neighbour(entry);
-      const vector<D>& s = shifts[tree::packed_shift(entry)];
-      double r2 = 0;
-      for (int k = 0; k < D; ++k) {
-        const double d = x_a[k] - (xs[b][k] + s[k]);
-        r2 += d * d;
-      }
-      const double radius_b = support * hs[b];
-      const bool in = r2 < std::max(own, radius_b * radius_b);
-      within[j] = in;
-      count += in;
-      ghost |= in & (b >= owned);
-    }
-    counts[a] = count;
-    ghosts[a] = ghost;
-  }, "sph::prune_neighbours::count");
-  for (std::size_t a = 0; a < owned; ++a) offsets[a + 1] += offsets[a];
-  n.lists.neighbours.resize(offsets[owned]);
-  release_spare_room(n.lists.neighbours);
-  std::uint32_t* const pruned = n.lists.neighbours.data();
-  const std::size_t* const starts = offsets.data();
-  flecsi_lite::forall(owned, [=](std::size_t a) {
-    std::size_t i = starts[a];
-    for (std::size_t j = kept_offsets[a], end = kept_offsets[a + 1]; j < end; ++j)
-      if (within[j]) pruned[i++] = entries[j];
-  }, "sph::prune_neighbours::fill");
-  n.interior.clear();
-  n.boundary.clear();
-  for (std::size_t a = 0; a < owned; ++a)
-    (needs_ghosts[a] ? n.boundary : n.interior).push_back(static_cast<std::uint32_t>(a));
-}
-
-/// Launches the pruning of the lists of `out` from its kept lists at the current positions and h.
-template<int D>
-void prune_neighbours(particle_tree<D>& p, tracked_neighbourhood<D>& out) {
-  using f = fields<D>;
-  flecsi_lite::execute<prune_lists<D>>(out, f::position()(p), f::smoothing_length()(p));
-}
-
-/// Launches the search of the kept lists of `out` on the tree of `p` (after ntree::distribute()
-/// or refresh_local_tree(), which the executor orders before it), `list_skin` beyond the reach,
-/// and the pruning of the lists from them.
+/// Launches the search of `out` on the tree of `p` (after ntree::distribute() or
+/// refresh_local_tree(), which the executor orders before it), `list_skin` beyond the reach.
 template<int D>
 void find_neighbours(particle_tree<D>& p, tracked_neighbourhood<D>& out, double list_skin) {
   flecsi_lite::execute<search_neighbours<D>>(p.local_tree_object(), out, p.settings().support, list_skin,
                                              p.space());
-  prune_neighbours(p, out);
 }
 
 /// Two distinct particles at the same position, the pair with the smallest ids (first < second);

@@ -56,9 +56,11 @@ struct physics_settings {
   /// are distributed again only once their motion and the growth of h have used that room up.
   double distribution_skin = 0.5;
   /// Neighbour lists are searched (1 + skin) times farther than the search reach and kept over
-  /// the steps until the particles' motion and the growth of h have used that room up
-  /// (list_reuse.hh); 0 keeps them only while nothing moves or grows.
-  double list_skin = 0.1;
+  /// the steps until the particles' displacement and the growth of h have used that room up
+  /// (list_reuse.hh); 0 keeps them only while nothing moves or grows, i.e. searches every step.
+  /// 0 is the fastest here: the entries beyond the kernel cost the pair loops more than the
+  /// searches saved (benchmarks/sph/README.md, "Neighbour lists kept over steps").
+  double list_skin = 0.0;
   gravity_settings gravity{};
 };
 

@@ -89,13 +89,13 @@ std::string time_step_failure(simulation<D>& s, double next) {
 /// Distributes the particles (sample sort, ghosts, local tree) when `redistribute` is set or when
 /// the particles' motion and growth of h since the last distribution could have brought particles
 /// that are not ghosts here within reach; otherwise, when their displacement and growth of h since
-/// the last search could have brought a pair within reach that the kept lists lack
-/// (list_reuse.hh), refits the local tree to the current positions and h (ghost values are copied
-/// first). After either, searches the kept lists again. Then prunes the lists from the kept
-/// ones: the pairs within reach now, in the kept (key, id, shift) order, so every list is the one
-/// a search now would give, bit for bit, whether or not the kept lists were searched at this step.
-/// The decisions depend only on particle values (exact maxima over ranks), so they are the same
-/// on any number of ranks. Collective.
+/// the last search could have brought a pair within reach that the lists lack (list_reuse.hh),
+/// refits the local tree to the current positions and h (ghost values are copied first). After
+/// either, searches every owned particle's neighbours; otherwise keeps the lists. A kept list
+/// holds every pair a search now would, in the same (key, id, shift) order, and the pair tasks
+/// skip the entries beyond the kernel support, so every sum takes the pairs of a search now in
+/// its order. The decisions depend only on particle values (exact maxima over ranks), so they are
+/// the same on any number of ranks. Collective.
 template<int D>
 void update_neighbours(simulation<D>& s, bool redistribute = false) {
   using f = fields<D>;
@@ -118,11 +118,8 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
   } else if (search) {
     p.refresh_local_tree();
   }
-  // Tasks: after the refit, and after the last readers of the old lists.
-  if (!search) {
-    prune_neighbours(p, s.neighbours);
-    return;
-  }
+  if (!search) return;
+  // A task: after the refit, and after the last readers of the old lists.
   find_neighbours(p, s.neighbours, s.physics.list_skin);
   ++s.searches;
 }
