@@ -58,8 +58,9 @@ struct physics_settings {
   /// Neighbour lists are searched (1 + skin) times farther than the search reach and kept over
   /// the steps until the particles' displacement and the growth of h have used that room up
   /// (list_reuse.hh); 0 keeps them only while nothing moves or grows, i.e. searches every step.
-  /// 0 is the fastest here: the entries beyond the kernel cost the pair loops more than the
-  /// searches saved (benchmarks/sph/README.md, "Neighbour lists kept over steps").
+  /// 0 is the fastest for the Sedov blast (the entries beyond the kernel cost the pair loops
+  /// more than the searches saved); slow flows gain with 0.1 (benchmarks/sph/README.md,
+  /// "Neighbour lists kept over steps").
   double list_skin = 0.0;
   gravity_settings gravity{};
 };
