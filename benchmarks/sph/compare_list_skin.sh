@@ -4,7 +4,9 @@
 # thread and 2 ranks x 1 thread; prints the medians per step. Arguments go to bench_sedov.
 #   OLD=/path/to/old/bench_sedov SKINS="0 0.05 0.1" benchmarks/sph/compare_list_skin.sh --per-side 50 --steps 5
 set -euo pipefail
-NEW=${NEW:-${FLECSPH_BUILD_DIR:-build}/benchmarks/sph/bench_sedov}
+here=$(cd "$(dirname "$0")/../.." && pwd)
+source "$here/scripts/mpirun-flags.sh"
+NEW=${NEW:-${FLECSPH_BUILD_DIR:-$here/build}/benchmarks/sph/bench_sedov}
 OLD=${OLD:-$NEW}
 SKINS=${SKINS:-"0 0.05 0.1"}
 ROUNDS=${ROUNDS:-3}
@@ -15,7 +17,7 @@ for round in $(seq "$ROUNDS"); do
   for cfg in old $SKINS; do
     if [ "$cfg" = old ]; then binary=$OLD; extra=(); else binary=$NEW; extra=(--set "list_skin=$cfg"); fi
     "$binary" "$@" "${extra[@]}" > "$OUT/r${round}_${cfg}_1x1.txt" 2>&1
-    mpirun --oversubscribe -np 2 "$binary" "$@" "${extra[@]}" > "$OUT/r${round}_${cfg}_2x1.txt" 2>&1
+    mpirun -np 2 "${FLECSPH_MPIRUN_FLAGS[@]}" "$binary" "$@" "${extra[@]}" > "$OUT/r${round}_${cfg}_2x1.txt" 2>&1
   done
 done
 uptime
