@@ -32,7 +32,7 @@ struct bench_state : sph::simulation<D> {
   long warm_up_steps = 1, timed_steps = 10;
   double start = 0, stop = 0;  ///< MPI_Wtime at the end of the warm-up and of the timed steps
   std::clock_t cpu_start = 0, cpu_stop = 0;  ///< CPU time of this process (all its threads), same
-  std::uint64_t distributions_before = 0, repeated_searches_before = 0;
+  std::uint64_t distributions_before = 0, repeated_searches_before = 0, searches_before = 0;
 };
 
 /// The keys of the sedov app from `path`, then `overrides`; the benchmark uses the problem and
@@ -58,6 +58,23 @@ double kernel_neighbours(sph::neighbours_ro<D> neighbours_object, sph::ro_with_g
     for (std::size_t j = walk.begin(a); j < walk.end(a); ++j)
       count += walk.separation(x(a), x(walk.neighbour(j)), j, r) < reach * reach;
   }
+  return count;
+}
+
+/// Pairs within the reach now, |r_ab| < reach max(h_a, h_b): what a search now would list (the
+/// lists, kept over steps with list_skin > 0, hold more).
+double within_reach(sph::neighbours_ro<D> neighbours_object, sph::ro_with_ghosts<sph::vector<D>> x,
+                    sph::ro_with_ghosts<double> h) {
+  const sph::neighbourhood<D>& neighbours = *neighbours_object;
+  const sph::neighbour_walk<D> walk(neighbours);
+  double count = 0;
+  sph::vector<D> r;
+  for (std::size_t a = 0; a < neighbours.size(); ++a)
+    for (std::size_t j = walk.begin(a); j < walk.end(a); ++j) {
+      const std::size_t b = walk.neighbour(j);
+      const double radius = neighbours.reach * std::max(h(a), h(b));
+      count += walk.separation(x(a), x(b), j, r) < radius * radius;
+    }
   return count;
 }
 
@@ -90,6 +107,7 @@ void benchmark_clock(bench_state& s) {
     timers::clear();
     s.distributions_before = s.distributions;
     s.repeated_searches_before = s.repeated_searches;
+    s.searches_before = s.searches;
     s.start = MPI_Wtime();
     s.cpu_start = std::clock();
   } else if (s.step == s.warm_up_steps + s.timed_steps) {
@@ -110,7 +128,9 @@ void report(bench_state& s) {
   // CPU time shows the work done whatever the load of a shared machine; wall time what it took.
   const double cpu = max_over_ranks(static_cast<double>(s.cpu_stop - s.cpu_start) / CLOCKS_PER_SEC);
   const auto rows = timers::summarize();  // before the measurements below add their own timers
-  const double list_entries = reduce<sph::neighbour_total<D>, reduction::sum>(s.neighbours).get();
+  const double entries = reduce<sph::neighbour_total<D>, reduction::sum>(s.neighbours).get();
+  const double in_reach =
+    reduce<within_reach, reduction::sum>(s.neighbours, f::position()(p), f::smoothing_length()(p)).get();
   const double in_kernel =
     reduce<kernel_neighbours, reduction::sum>(s.neighbours, f::position()(p), f::smoothing_length()(p)).get();
   const sph::memory_use bytes = sph::measure_memory(s);
@@ -125,14 +145,20 @@ void report(bench_state& s) {
               particles / per_step);
   std::printf("  CPU time per step (largest over ranks, all threads of a rank) %.4f s: %.2f cores busy per rank\n",
               cpu / static_cast<double>(s.timed_steps), cpu / seconds);
-  std::printf("  neighbours per particle: %.1f within 2 h (kernel), %.1f in the lists (reach %.3g max(h_a, h_b))\n",
-              in_kernel / particles, list_entries / particles, s.neighbours.host().reach);
+  const auto& n = s.neighbours.host();
+  std::printf("  neighbours per particle: %.1f within 2 h (kernel), %.1f within the reach %.3g max(h_a, h_b), "
+              "%.1f in the lists (searched with reach %.3g max(h_a, h_b): list_skin %.3g)\n",
+              in_kernel / particles, in_reach / particles, n.reach, entries / particles, n.list_reach, s.physics.list_skin);
   std::printf("  bytes per owned particle (largest over ranks): %.0f fields + %.0f neighbour lists = %.0f; "
               "besides, %.0f in the local tree and search workspaces\n",
               field_bytes, list_bytes, field_bytes + list_bytes, tree_bytes);
-  std::printf("  during the timed steps: %llu distributions, %llu repeated searches\n",
+  const auto searches = s.searches - s.searches_before;
+  std::printf("  during the timed steps: %llu distributions, %llu repeated searches, %llu neighbour searches "
+              "(a list lives %.2f steps)\n",
               static_cast<unsigned long long>(s.distributions - s.distributions_before),
-              static_cast<unsigned long long>(s.repeated_searches - s.repeated_searches_before));
+              static_cast<unsigned long long>(s.repeated_searches - s.repeated_searches_before),
+              static_cast<unsigned long long>(searches),
+              searches ? double(s.timed_steps) / double(searches) : double(s.timed_steps));
   std::printf("  time per step by timer (largest over ranks; 'ntree::distribute <phase>' rows are parts of "
               "'ntree::distribute'):\n");
   std::vector<timers::summary_row> sorted(rows.begin(), rows.end());

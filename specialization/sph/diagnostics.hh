@@ -108,10 +108,8 @@ memory_use measure_memory(const simulation<D>& s) {
   const double owned = static_cast<double>(std::max<std::size_t>(1, s.particles->owned_size()));
   for (const auto& storage : s.particles->storages())
     if (storage) result.fields += static_cast<double>(storage->element_size() * storage->size());
-  const auto& lists = s.neighbours.host().lists;  // what is allocated, spare room included
-  result.neighbour_lists = static_cast<double>(lists.offsets.capacity() * sizeof(std::size_t) +
-                                               lists.neighbours.capacity() * sizeof(std::uint32_t) +
-                                               lists.shifts.capacity() * sizeof(tree::shift_code));
+  const auto& n = s.neighbours.host();  // what is allocated, spare room included
+  result.neighbour_lists = static_cast<double>(n.bytes());
   result.fields /= owned;
   result.neighbour_lists /= owned;
   return result;
@@ -125,7 +123,8 @@ void run_summary(simulation<D>& s) {
                            << s.elapsed << " s: "
                            << particle_steps_per_second(s)
                            << " particle-steps/s, " << s.distributions << " distributions, "
-                           << s.repeated_searches << " repeated searches; bytes per owned particle (rank 0): "
+                           << s.repeated_searches << " repeated searches, " << s.searches
+                           << " neighbour searches; bytes per owned particle (rank 0): "
                            << std::setprecision(3) << bytes.fields << " in fields, " << bytes.neighbour_lists
                            << " in neighbour lists";
   s.balance.settle();

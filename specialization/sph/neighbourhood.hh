@@ -25,14 +25,21 @@ namespace tree = flecsi_lite::topology::ntree;
 
 /// Vocabulary: particle a is a TARGET (owned here); each of its NEIGHBOURS b is seen as the image
 /// x_b + shift, so that the separation is r_ab = x_a - (x_b + shift). The lists hold, for every
-/// owned a, at least every b with |r_ab| < reach * max(h_a, h_b) for the h values they were
-/// searched with, in ascending (key, id) order: sums over them do not depend on the rank count.
+/// owned a, at least every b with |r_ab| < reach * max(h_a, h_b) for the current positions and h
+/// values, in ascending (key, id, shift) order of the last distribution: sums over them do not
+/// depend on the rank count. They are searched with list_reach = reach (1 + list_skin) at the
+/// positions listed_x and h listed_h and kept over the steps while that still holds
+/// (list_reuse.hh; Verlet 1967). The pair tasks skip the entries beyond the kernel support, so a
+/// sum takes the same pairs in the same order as over the lists of a search now.
 /// Each entry packs b with its shift code (ntree::shift_storage::packed): 4 bytes per entry.
 template<int D>
 struct neighbourhood {
   tree::neighbour_lists lists;  ///< offsets per owned particle, packed entries (b, shift code)
   std::array<vector<D>, tree::shift_code_count<D>> shift_table{};  ///< displacement per shift code
-  double reach = 2.0;  ///< search radius in units of h (>= the kernel support 2)
+  double reach = 2.0;       ///< the reach the lists hold, in units of h (>= the kernel support 2)
+  double list_reach = 2.0;  ///< the reach they were searched with (>= reach)
+  std::vector<vector<D>> listed_x;  ///< position of each owned particle at the search
+  std::vector<double> listed_h;     ///< its h then
   /// The owned targets whose lists hold owned particles only (a periodic image of an owned
   /// particle is owned data), and the others, whose lists hold a ghost; each ascending, together
   /// every target once. Filled with the lists (split_targets).
@@ -44,8 +51,15 @@ struct neighbourhood {
   const std::vector<std::uint32_t>& targets(flecsi_lite::privilege ghost) const {
     return ghost == flecsi_lite::na ? interior : boundary;
   }
-  /// Mean number of neighbours per target (itself included).
+  /// Mean number of list entries per target (itself included).
   double mean_count() const { return size() ? double(lists.total()) / double(size()) : 0.0; }
+  /// Memory held (allocated room included): the lists, the positions and h of the search and
+  /// the target sets.
+  std::size_t bytes() const {
+    return lists.offsets.capacity() * sizeof(std::size_t) + lists.neighbours.capacity() * sizeof(std::uint32_t) +
+           lists.shifts.capacity() * sizeof(tree::shift_code) + listed_x.capacity() * sizeof(vector<D>) +
+           listed_h.capacity() * sizeof(double) + (interior.capacity() + boundary.capacity()) * sizeof(std::uint32_t);
+  }
 };
 
 /// The neighbourhood as tasks share it: the executor orders the search that writes it before the
@@ -97,6 +111,13 @@ struct neighbour_walk {
 /// unchanged by the schedule.
 inline constexpr flecsi_lite::dynamic_schedule target_schedule{256};
 
+/// Gives back the room of `v` beyond a quarter more than its size: the lists of the first search
+/// (from the initial guess of h) would otherwise hold memory for good.
+template<class T>
+void release_spare_room(std::vector<T>& v) {
+  if (v.capacity() > v.size() + v.size() / 4) v.shrink_to_fit();
+}
+
 /// Splits the targets of `n` into interior and boundary: a target is interior when every entry
 /// of its list is an owned particle (storage index below the number of targets, the owned count).
 template<int D>
@@ -116,24 +137,41 @@ void split_targets(neighbourhood<D>& n) {
 }
 
 /// The search task: fills `out` from the local tree's search over owned targets (symmetric
-/// criterion, reach `support`). The tree keeps its search workspaces, hence rw.
+/// criterion, reach `support` (1 + list_skin)), with the positions and h it searched with (the
+/// tree's sorted copies, current after a build or refit). The tree keeps its search workspaces,
+/// hence rw.
 template<int D>
 void search_neighbours(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
                        typename tracked_neighbourhood<D>::template accessor<flecsi_lite::wo> out, double support,
-                       tree::domain<D> space) {
-  local->find_neighbours(tree::interaction::symmetric, support, space, out->lists, {}, tree::shift_storage::packed);
+                       double list_skin, tree::domain<D> space) {
+  const double list_reach = support * (1 + list_skin);
+  local->find_neighbours(tree::interaction::symmetric, list_reach, space, out->lists, {},
+                         tree::shift_storage::packed);
+  release_spare_room(out->lists.neighbours);
   const auto table = space.shift_table();
   for (std::size_t c = 0; c < table.size(); ++c)
     for (int k = 0; k < D; ++k) out->shift_table[c][k] = table[c][k];
   out->reach = support;
+  out->list_reach = list_reach;
+  const std::size_t owned = local->owned_size();
+  out->listed_x.resize(owned);
+  out->listed_h.resize(owned);
+  const std::size_t* sorted = local->storage_to_sorted().data();
+  const auto* x = local->positions().data();
+  const double* h = local->smoothing_lengths().data();
+  flecsi_lite::forall(owned, [&](std::size_t a) {
+    out->listed_x[a] = x[sorted[a]];
+    out->listed_h[a] = h[sorted[a]];
+  }, "sph::search_neighbours::listed");
   split_targets(*out);
 }
 
 /// Launches the search of `out` on the tree of `p` (after ntree::distribute() or
-/// refresh_local_tree(), which the executor orders before it).
+/// refresh_local_tree(), which the executor orders before it), `list_skin` beyond the reach.
 template<int D>
-void find_neighbours(particle_tree<D>& p, tracked_neighbourhood<D>& out) {
-  flecsi_lite::execute<search_neighbours<D>>(p.local_tree_object(), out, p.settings().support, p.space());
+void find_neighbours(particle_tree<D>& p, tracked_neighbourhood<D>& out, double list_skin) {
+  flecsi_lite::execute<search_neighbours<D>>(p.local_tree_object(), out, p.settings().support, list_skin,
+                                             p.space());
 }
 
 /// Two distinct particles at the same position, the pair with the smallest ids (first < second);

@@ -68,7 +68,7 @@ void check_particle_set(simulation<D>& s, const std::string& what) {
              "solution without neighbours; set adaptive_smoothing_length = false to run it with its h");
   p.distribute();
   tracked_neighbourhood<D> neighbours{"coincidence check lists"};
-  find_neighbours(p, neighbours);
+  find_neighbours(p, neighbours, 0.0);
   const auto pair =
     flecsi_lite::reduce<find_coincident<D>, coincident_reduction>(neighbours, f::position()(p), f::id()(p)).get();
   if (!pair.found()) return;

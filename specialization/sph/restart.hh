@@ -99,7 +99,8 @@ void distribute_as_written(simulation<D>& s) {
   swap();
   ++s.distributions;
   p.refresh_local_tree();
-  find_neighbours(p, s.neighbours);
+  find_neighbours(p, s.neighbours, s.physics.list_skin);
+  ++s.searches;
 }
 
 /// The checkpoint's clock as a restart needs it: time, dt and step present and finite, dt > 0,

@@ -65,6 +65,9 @@ physics_block declare_physics(const physics_settings& defaults) {
   p.real("distribution_skin", &physics_settings::distribution_skin,
          "ghosts reach (1 + skin) times the search: distribute when used up")
     .range(0, 10);
+  p.real("list_skin", &physics_settings::list_skin,
+         "neighbour lists reach (1 + skin) times the search: search again when used up")
+    .range(0, 10);
   p.choice("key_order", &physics_settings::key_order, key_order_names(),
            "space-filling curve of the distribution (hilbert: compact domains, fewer ghosts)");
   p.choice("balance", &physics_settings::balance, balance_names(),

@@ -60,6 +60,13 @@ struct physics_settings {
   /// Ghosts are selected (1 + skin) times farther than the search reaches, so that the particles
   /// are distributed again only once their motion and the growth of h have used that room up.
   double distribution_skin = 0.5;
+  /// Neighbour lists are searched (1 + skin) times farther than the search reach and kept over
+  /// the steps until the particles' displacement and the growth of h have used that room up
+  /// (list_reuse.hh); 0 keeps them only while nothing moves or grows, i.e. searches every step.
+  /// 0 is the fastest for the Sedov blast (the entries beyond the kernel cost the pair loops
+  /// more than the searches saved); slow flows gain with 0.1 (benchmarks/sph/README.md,
+  /// "Neighbour lists kept over steps").
+  double list_skin = 0.0;
   /// The space-filling curve that orders and distributes the particles (seed section 2.3.1):
   /// Hilbert's domains are more compact than Morton's, so they need fewer ghosts.
   flecsi_lite::topology::ntree::curve key_order = flecsi_lite::topology::ntree::curve::hilbert;

@@ -82,6 +82,7 @@ struct simulation {
   long totals_step = -1;                        ///< step of `totals`
   std::uint64_t distributions = 0;              ///< calls of ntree::distribute()
   std::uint64_t repeated_searches = 0;          ///< searches redone because h outgrew the reach
+  std::uint64_t searches = 0;                   ///< neighbour searches (the lists kept in between)
   double mean_neighbours = 0;                   ///< at the last progress line, over all ranks
   std::chrono::steady_clock::time_point started;
   long started_step = 0;     ///< step when the cycle started

@@ -8,6 +8,7 @@
 #include "specialization/sph/equation_of_state.hh"
 #include "specialization/sph/forces.hh"
 #include "specialization/sph/integrator.hh"
+#include "specialization/sph/list_reuse.hh"
 #include "specialization/sph/redistribution.hh"
 #include "specialization/sph/simulation.hh"
 
@@ -87,19 +88,27 @@ std::string time_step_failure(simulation<D>& s, double next) {
 
 /// Distributes the particles (sample sort, ghosts, local tree) when `redistribute` is set or when
 /// the particles' motion and growth of h since the last distribution could have brought particles
-/// that are not ghosts here within reach; otherwise refits the local tree to the current
-/// positions and h (ghost values are copied first). Then finds every owned particle's neighbours.
-/// The decision depends only on particle values, so it is the same on any number of ranks.
-/// Collective.
+/// that are not ghosts here within reach; otherwise, when their displacement and growth of h since
+/// the last search could have brought a pair within reach that the lists lack (list_reuse.hh),
+/// refits the local tree to the current positions and h (ghost values are copied first). After
+/// either, searches every owned particle's neighbours; otherwise keeps the lists. A kept list
+/// holds every pair a search now would, in the same (key, id, shift) order, and the pair tasks
+/// skip the entries beyond the kernel support, so every sum takes the pairs of a search now in
+/// its order. The decisions depend only on particle values (exact maxima over ranks), so they are
+/// the same on any number of ranks. Collective.
 template<int D>
 void update_neighbours(simulation<D>& s, bool redistribute = false) {
   using f = fields<D>;
   auto& p = *s.particles;
+  bool search = true;
   if (!redistribute) {
-    const auto slack = flecsi_lite::reduce<measure_distribution_slack, slack_reduction>(
-                         f::smoothing_length()(p), f::drift(p), f::distributed_h(p))
+    const auto slack = flecsi_lite::reduce<measure_neighbour_slack<D>, neighbour_slack_reduction>(
+                         s.neighbours, p.space(), f::position()(p), f::smoothing_length()(p), f::drift(p),
+                         f::distributed_h(p))
                          .get();
-    redistribute = !ghosts_still_suffice(slack, p.settings().support, s.physics.distribution_skin);
+    const double support = p.settings().support;
+    redistribute = !ghosts_still_suffice(slack.distribution, support, s.physics.distribution_skin);
+    search = redistribute || !lists_still_suffice(slack.lists, support, s.physics.list_skin);
   }
   double count_imbalance = 0;
   if (redistribute) {
@@ -109,10 +118,13 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
     flecsi_lite::execute<mark_distributed<D>>(f::smoothing_length()(p), f::position()(p), f::drift(p),
                                               f::distributed_h(p), f::distributed_position(p));
     ++s.distributions;
-  } else {
+  } else if (search) {
     p.refresh_local_tree();
   }
-  find_neighbours(p, s.neighbours);  // a task: after the refit, and after the last readers of the old lists
+  if (!search) return;
+  // A task: after the refit, and after the last readers of the old lists.
+  find_neighbours(p, s.neighbours, s.physics.list_skin);
+  ++s.searches;
   if (redistribute)
     s.balance.expect(count_imbalance,
                      flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::max>(s.neighbours),
