@@ -11,12 +11,14 @@ import math
 import os
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plotting"))
+import h5part_plot  # noqa: E402
 
 PROGRAM = "plot_bns"
 
@@ -69,39 +71,35 @@ def plot_orbit(columns, output):
 
 
 def plot_frames(path, prefix, extent, slab, bins=100):
-    with h5py.File(path, "r") as f:
-        steps = sorted(int(k[5:]) for k in f.keys() if k.startswith("Step#"))
-        if not steps:
-            sys.exit(f"{PROGRAM}: {path} holds no Step#N group")
-        directory = os.path.dirname(prefix)
-        if directory:
-            os.makedirs(directory, exist_ok=True)
-        edges = np.linspace(-extent, extent, bins + 1)
-        area = (edges[1] - edges[0]) ** 2
-        written = 0
-        for index in steps:
-            group = f[f"Step#{index}"]
-            x, y, z, m = (group[k][()] for k in ("x", "y", "z", "m"))
-            time = float(group.attrs.get("TimeValue", group.attrs.get("time", 0.0)))
-            keep = np.abs(z) < slab
-            grid, _, _ = np.histogram2d(x[keep], y[keep], bins=[edges, edges], weights=m[keep])
-            # A 3 x 3 binomial filter: a few thousand particles leave single empty cells otherwise.
-            weights = np.array([1.0, 2.0, 1.0])
-            padded = np.pad(grid, 1)
-            grid = sum(weights[i] * weights[j] * padded[i:i + bins, j:j + bins] for i in range(3) for j in range(3)) / 16
-            density = grid.T / (area * 2 * slab)
-            figure, axis = plt.subplots(figsize=(5.5, 5))
-            shown = np.log10(np.maximum(density, 1e-4 * max(density.max(), 1e-300)))
-            image = axis.imshow(shown, origin="lower", extent=[-extent, extent, -extent, extent], cmap="inferno")
-            figure.colorbar(image, ax=axis, label=f"log10 mean density, |z| < {slab:g}")
-            axis.set_xlabel("x")
-            axis.set_ylabel("y")
-            axis.set_title(f"t = {time:.4g}")
-            figure.tight_layout()
-            name = f"{prefix}{written:04d}.png"
-            figure.savefig(name, dpi=90)
-            plt.close(figure)
-            written += 1
+    steps = h5part_plot.step_indices(path, PROGRAM)
+    directory = os.path.dirname(prefix)
+    if directory:
+        os.makedirs(directory, exist_ok=True)
+    edges = np.linspace(-extent, extent, bins + 1)
+    area = (edges[1] - edges[0]) ** 2
+    written = 0
+    for index in steps:
+        time, data, _ = h5part_plot.read_step(path, index, PROGRAM)
+        x, y, z, m = (data[k] for k in ("x", "y", "z", "m"))
+        keep = np.abs(z) < slab
+        grid, _, _ = np.histogram2d(x[keep], y[keep], bins=[edges, edges], weights=m[keep])
+        # A 3 x 3 binomial filter: a few thousand particles leave single empty cells otherwise.
+        weights = np.array([1.0, 2.0, 1.0])
+        padded = np.pad(grid, 1)
+        grid = sum(weights[i] * weights[j] * padded[i:i + bins, j:j + bins] for i in range(3) for j in range(3)) / 16
+        density = grid.T / (area * 2 * slab)
+        figure, axis = plt.subplots(figsize=(5.5, 5))
+        shown = np.log10(np.maximum(density, 1e-4 * max(density.max(), 1e-300)))
+        image = axis.imshow(shown, origin="lower", extent=[-extent, extent, -extent, extent], cmap="inferno")
+        figure.colorbar(image, ax=axis, label=f"log10 mean density, |z| < {slab:g}")
+        axis.set_xlabel("x")
+        axis.set_ylabel("y")
+        axis.set_title(f"t = {time:.4g}")
+        figure.tight_layout()
+        name = f"{prefix}{written:04d}.png"
+        figure.savefig(name, dpi=90)
+        plt.close(figure)
+        written += 1
     print(f"{PROGRAM}: wrote {written} frames {prefix}0000.png ..")
 
 

@@ -12,7 +12,6 @@ import math
 import os
 import sys
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "plotting"))
@@ -49,8 +48,7 @@ def main():
     parser.add_argument("--until", type=float, default=0.9, help="errors up to this fraction of t_ff")
     args = parser.parse_args()
     indices = h5part_plot.step_indices(args.file, PROGRAM)
-    with h5py.File(args.file, "r") as f:
-        attributes = {k: f.attrs[k] for k in f.attrs.keys()}
+    attributes = h5part_plot.attributes(args.file, PROGRAM)
     radius_of_sphere = h5part_plot.number(attributes, "sphere_radius", 1.0)
     mass_of_sphere = h5part_plot.number(attributes, "sphere_mass", 1.0)
     gravitational_constant = h5part_plot.number(attributes, "gravitational_constant", 1.0)
@@ -58,9 +56,10 @@ def main():
     t_ff = 0.5 * math.pi * math.sqrt(radius_of_sphere ** 3 / (2.0 * gravitational_constant * mass_of_sphere))
     fractions = sorted({0.5, 0.9, 0.99, app_fraction})
 
-    times, radii = [], []
+    times, radii, counts = [], [], []
     for k in indices:
         time, data, _ = h5part_plot.read_step(args.file, k, PROGRAM)
+        counts.append(len(data["x"]))
         r = np.sqrt(data["x"] ** 2 + data["y"] ** 2 + data["z"] ** 2)
         times.append(time)
         radii.append([fraction_radius(r, data["m"], f) for f in fractions])
@@ -90,9 +89,7 @@ def main():
     errors.set_xlabel("t / t_ff")
     errors.set_ylabel("r / r_free_fall - 1")
     errors.grid(alpha=0.3)
-    with h5py.File(args.file, "r") as f:
-        count = f[f"Step#{indices[0]}"]["x"].shape[0]
-    axis.set_title(f"Cold collapse of a uniform sphere, {count} particles, t_ff = {t_ff:.4f}")
+    axis.set_title(f"Cold collapse of a uniform sphere, {counts[0]} particles, t_ff = {t_ff:.4f}")
     figure.tight_layout()
     h5part_plot.save(figure, args, dpi=120)
 

@@ -13,7 +13,6 @@ largest |E - E0| / |E0| and the L1 differences of log rho and of v_r in radial b
 import os
 import sys
 
-import h5py
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -54,18 +53,9 @@ def energies_of(statistics):
 
 
 def step_nearest(path, time):
-    """The index k of the Step#k whose TimeValue is nearest to `time`."""
-    best = None
-    with h5py.File(path, "r") as f:
-        for key in f.keys():
-            if not key.startswith("Step#"):
-                continue
-            value = float(f[key].attrs.get("TimeValue", 0.0))
-            if best is None or abs(value - time) < abs(best[1] - time):
-                best = (int(key[5:]), value)
-    if best is None:
-        sys.exit(f"{PROGRAM}: {path} holds no Step#N group")
-    return best[0]
+    """The index k of the Step#k whose time is nearest to `time` (the lower k of a tie)."""
+    times = h5part_plot.step_times(path, PROGRAM)
+    return min(sorted(times), key=lambda k: abs(times[k] - time))
 
 
 def plot_energies(plt, statistics_path, output):

@@ -346,6 +346,12 @@ int run(const app::run_context& context) {
   } else if (s.problem.type == problem_type::couette) {
     s.check_times = {s.run.end_time};
   }
+  {
+    std::ostringstream eos;
+    eos << "Tait (rho0 " << s.fluid.eos.reference_density << ", c0 " << s.fluid.eos.reference_sound_speed
+        << ", exponent " << s.fluid.eos.exponent << ")";
+    s.equation_of_state = eos.str();
+  }
   s.description = {{"length", s.problem.length}, {"dx", s.layout.dx}, {"rho0", s.fluid.eos.reference_density},
                    {"c0", s.fluid.eos.reference_sound_speed}, {"gravity", s.fluid.body_force[1]}};
   auto m = fl::make_fluid_control_model<fluid_run<D>>({set_domain<D>, create<D>});

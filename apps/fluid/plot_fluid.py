@@ -7,19 +7,23 @@
 import argparse
 import math
 import os
+import sys
 
-import h5py
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "plotting"))
+import h5part_plot  # noqa: E402
+
+PROGRAM = "plot_fluid"
 
 
-def parameters(f):
+def parameters(path):
     """The run's resolved parameters (root attribute 'parameters') as a dict of strings."""
-    text = f.attrs["parameters"]
+    text = h5part_plot.attributes(path, PROGRAM)["parameters"]
     text = text.decode() if isinstance(text, bytes) else str(text)
     values = {}
     for line in text.splitlines():
@@ -30,8 +34,11 @@ def parameters(f):
     return values
 
 
-def steps(f):
-    return sorted(f.keys(), key=lambda k: int(k.split("#")[1]))
+def step(path, index):
+    """(time, the fluid particles' x, y, vx, vy, P, rho) of Step#index."""
+    time, data, _ = h5part_plot.read_step(path, index, PROGRAM)
+    keep = data["kind"] == 0
+    return time, {name: data[name][keep] for name in ("x", "y", "vx", "vy", "P", "rho")}
 
 
 def poiseuille(y, t, L, F, nu, terms=200):
@@ -49,12 +56,7 @@ def couette(y, t, L, v0, nu, terms=400):
     return v
 
 
-def fluid_of(group):
-    keep = group["kind"][:] == 0
-    return {name: group[name][:][keep] for name in ("x", "y", "vx", "vy", "P", "rho")}
-
-
-def plot_dam_break(f, p, series_path, out):
+def plot_dam_break(path, p, series_path, out):
     L = float(p["length"]); g = -float(p.get("body_force_y", "-9.81"))
     fig = plt.figure(figsize=(13, 6))
     experiment = np.loadtxt(os.path.join(HERE, "martin_moyce_1952.txt"))
@@ -67,11 +69,11 @@ def plot_dam_break(f, p, series_path, out):
         ax.plot(s[:, 0] * math.sqrt(2 * g / L), (s[:, 1] + 0.5 * dx) / L, "b-", label="SPH, dx = L/%s" % p["particles"])
     ax.set_xlim(0, 3.2); ax.set_ylim(1, 4)
     ax.set_xlabel("T = t sqrt(2 g / L)"); ax.set_ylabel("Z / L"); ax.legend(); ax.set_title("surge front")
-    names = steps(f)
+    names = h5part_plot.step_indices(path, PROGRAM)
     picks = [names[int(i)] for i in np.linspace(0, len(names) - 1, 4)]
     for index, name in enumerate(picks):
         ax = fig.add_subplot(4, 2, 2 * index + 2)
-        q = fluid_of(f[name]); t = float(f[name].attrs.get("time", 0))
+        t, q = step(path, name)
         ax.scatter(q["x"] / L, q["y"] / L, s=0.5, c=q["P"], cmap="viridis")
         ax.set_aspect("equal"); ax.set_xlim(0, 4); ax.set_ylim(0, 2.1)
         ax.set_title("T = %.2f (colour: P)" % (t * math.sqrt(2 * g / L)), fontsize=8)
@@ -79,12 +81,12 @@ def plot_dam_break(f, p, series_path, out):
     fig.tight_layout(); fig.savefig(out, dpi=120)
 
 
-def plot_channel(f, p, out, kind):
+def plot_channel(path, p, out, kind):
     L = float(p["length"]); mu = float(p.get("dynamic_viscosity", "0")); rho0 = float(p.get("rho0", "1000"))
     nu = mu / rho0
     fig, ax = plt.subplots(figsize=(7, 5))
-    for name in steps(f)[1:]:
-        q = fluid_of(f[name]); t = float(f[name].attrs.get("time", 0))
+    for name in h5part_plot.step_indices(path, PROGRAM)[1:]:
+        t, q = step(path, name)
         y = np.linspace(0, L, 101)
         exact = poiseuille(y, t, L, float(p["body_force_x"]), nu) if kind == "poiseuille" else couette(y, t, L, float(p["lid_velocity"]), nu)
         line, = ax.plot(exact, y / L, "-", lw=1)
@@ -94,9 +96,9 @@ def plot_channel(f, p, out, kind):
     fig.tight_layout(); fig.savefig(out, dpi=120)
 
 
-def plot_still_tank(f, p, out):
+def plot_still_tank(path, p, out):
     L = float(p["length"]); g = -float(p.get("body_force_y", "-9.81")); rho0 = float(p.get("rho0", "1000"))
-    q = fluid_of(f[steps(f)[-1]])
+    _, q = step(path, h5part_plot.step_indices(path, PROGRAM)[-1])
     fig, ax = plt.subplots(figsize=(6, 5))
     ax.plot(q["P"] / (rho0 * g * L), q["y"] / L, ".", ms=2, label="SPH (last step)")
     y = np.linspace(0, L, 50)
@@ -110,17 +112,16 @@ def main():
     parser.add_argument("file")
     parser.add_argument("--out")
     args = parser.parse_args()
-    with h5py.File(args.file, "r") as f:
-        p = parameters(f)
-        kind = p["problem"]
-        out = args.out or os.path.splitext(args.file)[0] + ".png"
-        series = os.path.splitext(args.file)[0] + ".series.txt"
-        if kind == "dam_break":
-            plot_dam_break(f, p, series, out)
-        elif kind in ("poiseuille", "couette"):
-            plot_channel(f, p, out, kind)
-        else:
-            plot_still_tank(f, p, out)
+    p = parameters(args.file)
+    kind = p["problem"]
+    out = args.out or os.path.splitext(args.file)[0] + ".png"
+    series = os.path.splitext(args.file)[0] + ".series.txt"
+    if kind == "dam_break":
+        plot_dam_break(args.file, p, series, out)
+    elif kind in ("poiseuille", "couette"):
+        plot_channel(args.file, p, out, kind)
+    else:
+        plot_still_tank(args.file, p, out)
     print("wrote", out)
 
 

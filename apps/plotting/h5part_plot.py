@@ -36,6 +36,25 @@ def read_step(path, step, program):
         sys.exit(f"{program}: {error}")
 
 
+def attributes(path, program):
+    """The root attributes of an H5Part file (its parameters, units and problem constants)."""
+    try:
+        return flecsph_lite.h5part_attributes(path)
+    except OSError as error:
+        sys.exit(f"{program}: cannot read {path}: {error}")
+
+
+def step_times(path, program):
+    """{k: time} of every Step#k of an H5Part file (no datasets read); exits when it has none."""
+    try:
+        times = flecsph_lite.h5part_step_times(path)
+    except OSError as error:
+        sys.exit(f"{program}: cannot read {path}: {error}")
+    if not times:
+        sys.exit(f"{program}: {path} holds no Step#N group")
+    return times
+
+
 def number(attributes, key, default):
     """A numeric root attribute as a float (HDF5 tools may store scalars as 1-element arrays)."""
     value = attributes.get(key, default)

@@ -2,6 +2,7 @@
 #include "flecsi_lite/io/gadget_reader.hh"
 
 #include "flecsi_lite/io/collective_agreement.hh"
+#include "flecsi_lite/io/hdf5/collective_open.hh"
 #include "flecsi_lite/io/hdf5/h5part_precheck.hh"
 #include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
 #include "flecsi_lite/io/hdf5/hdf5_errors.hh"
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <variant>
 
 namespace flecsi_lite::io {
@@ -90,25 +92,7 @@ gadget_reader::gadget_reader(std::string path, std::string group, std::map<std::
                              MPI_Comm comm)
   : path_(std::move(path)), group_(std::move(group)), columns_(std::move(columns)), comm_(comm) {
   hdf5_quiet_scope quiet;
-  agree(comm_, [&] {
-    if (rank_of(comm_) != 0) return;
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path_, error)) throw file_error("cannot open '" + path_ + "': no such file");
-    if (H5Fis_hdf5(path_.c_str()) <= 0) throw file_error("'" + path_ + "' is not an HDF5 file");
-    if (const std::string crash = h5part::metadata_crash_check(path_); !crash.empty()) throw file_error(crash);
-  });
-  auto access = mpio_file_access(comm_);
-  file_ = file_handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, access.get()));
-  std::optional<failure_record> failed;
-  if (!file_)
-    failed = failure_record{failure::file, "'" + path_ + "' is truncated or corrupted: HDF5 cannot open it" +
-                                             hdf5_reason()};
-  try {
-    raise_if_any(comm_, failed);
-  } catch (...) {
-    file_.release();  // a parallel close on only the ranks that opened it would never return
-    throw;
-  }
+  file_ = open_for_reading_collectively(path_, comm_, "a SWIFT snapshot");
   agree(comm_, [&] {
     if (!has_link(file_.get(), group_))
       throw missing_dataset_error("'" + path_ + "' has no group " + group_ + " (its particles)");

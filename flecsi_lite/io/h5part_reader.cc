@@ -2,8 +2,8 @@
 #include "flecsi_lite/io/h5part_reader.hh"
 
 #include "flecsi_lite/io/collective_agreement.hh"
+#include "flecsi_lite/io/hdf5/collective_open.hh"
 #include "flecsi_lite/io/hdf5/h5part_layout.hh"
-#include "flecsi_lite/io/hdf5/h5part_precheck.hh"
 #include "flecsi_lite/io/hdf5/h5part_steps.hh"
 #include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
 #include "flecsi_lite/io/hdf5/hdf5_errors.hh"
@@ -12,10 +12,6 @@
 #include "flecsi_lite/util/edit_distance.hh"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <optional>
 
 namespace flecsi_lite::io {
@@ -25,21 +21,6 @@ int size_of(MPI_Comm comm) {
   int size = 1;
   MPI_Comm_size(comm, &size);
   return size;
-}
-
-// Rank 0's look at the file before HDF5 opens it, for a precise message.
-void check_readable_hdf5(const std::string& path) {
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (!std::filesystem::exists(status)) throw file_error("cannot open '" + path + "': no such file");
-  if (std::filesystem::is_directory(status))
-    throw file_error("cannot open '" + path + "': it is a directory, not an H5Part file");
-  std::ifstream probe(path, std::ios::binary);
-  if (!probe) throw file_error("cannot read '" + path + "': " + std::strerror(errno));
-  const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
-  if (is_hdf5 == 0) throw file_error("'" + path + "' is not an HDF5 file (no HDF5 signature)");
-  if (is_hdf5 < 0) throw file_error("cannot read '" + path + "'" + hdf5_reason());
-  if (const std::string crash = h5part::metadata_crash_check(path); !crash.empty()) throw file_error(crash);
 }
 
 std::string describe_steps(const std::vector<std::int64_t>& steps) {
@@ -60,21 +41,7 @@ herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* names) {
 
 h5part_reader::h5part_reader(std::string path, MPI_Comm comm) : path_(std::move(path)), comm_(comm) {
   hdf5_quiet_scope quiet;
-  agree(comm_, [&] {
-    if (rank_of(comm_) == 0) check_readable_hdf5(path_);
-  });
-  auto access = mpio_file_access(comm_);
-  file_ = file_handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, access.get()));
-  std::optional<failure_record> failed;
-  if (!file_)
-    failed = failure_record{failure::file, "'" + path_ + "' is truncated or corrupted: HDF5 cannot open it" +
-                                             hdf5_reason()};
-  try {
-    raise_if_any(comm_, failed);
-  } catch (...) {
-    file_.release();  // a parallel close on only the ranks that opened it would never return
-    throw;
-  }
+  file_ = open_for_reading_collectively(path_, comm_, "an H5Part file");
   agree(comm_, [&] { steps_ = h5part::step_indices(file_.get()); });
 }
 

@@ -9,7 +9,9 @@ snapshots (one `<stem>_NNNN.hdf5` per output time), as numpy arrays under the sn
     time, data, attributes = flecsph_lite.read_h5part_step("sod_1d.h5part", 3)  # H5Part names, as stored
 """
 from .reader import (Particles, read, read_h5part, read_snapshot, h5part_steps, read_h5part_step,
+                     h5part_step_times, h5part_attributes,
                      H5PART_TO_SNAPSHOT)
 
 __all__ = ["Particles", "read", "read_h5part", "read_snapshot", "h5part_steps", "read_h5part_step",
+           "h5part_step_times", "h5part_attributes",
            "H5PART_TO_SNAPSHOT"]

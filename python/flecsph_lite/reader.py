@@ -110,6 +110,22 @@ def h5part_steps(path):
         return sorted(int(k[5:]) for k in f.keys() if k.startswith("Step#"))
 
 
+def _step_time(group):
+    return float(group.attrs.get("TimeValue", group.attrs.get("time", 0.0)))
+
+
+def h5part_step_times(path):
+    """{k: time} of every Step#k group of an H5Part file, without reading its datasets."""
+    with h5py.File(path, "r") as f:
+        return {int(k[5:]): _step_time(f[k]) for k in f.keys() if k.startswith("Step#")}
+
+
+def h5part_attributes(path):
+    """The root attributes of an H5Part file (parameters, units, problem constants)."""
+    with h5py.File(path, "r") as f:
+        return {k: f.attrs[k] for k in f.attrs.keys()}
+
+
 def read_h5part_step(path, step=None):
     """(time, {dataset: array}, {root attribute: value}) of Step#step as the file holds them, under
     the H5Part names (x, rho, kind, ...); the last step when None. ValueError for a file without
@@ -123,7 +139,7 @@ def read_h5part_step(path, step=None):
     with h5py.File(path, "r") as f:
         group = f[f"Step#{step}"]
         data = {k: group[k][()] for k in group.keys()}
-        time = float(group.attrs.get("TimeValue", group.attrs.get("time", 0.0)))
+        time = _step_time(group)
         attributes = {k: f.attrs[k] for k in f.attrs.keys()}
     return time, data, attributes
 

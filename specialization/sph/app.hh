@@ -58,6 +58,9 @@ struct app_state : simulation<D> {
   /// rank, so it may reduce); none by default.
   std::vector<statistics_column> extra_statistics_columns;
   std::function<std::vector<double>()> extra_statistics;
+  /// The banner's equation of state, for an app whose pressure is not physics.eos's (the fluid
+  /// app's Tait liquid); empty: physics.eos's name.
+  std::string equation_of_state;
   flecsi_lite::app::stop_monitor stop;  ///< wall_time_limit and stop_file
   std::string stop_reason;              ///< why the run stopped before end_time ("": it did not)
   std::string allowed_changes;          ///< allow_parameter_changes
@@ -258,8 +261,11 @@ void describe_particles(app_state<D>& s) {
   auto line = flecsi_lite::log::info();
   line << s.program << ": " << p.global_size() << " particles (" << fluid << " fluid, " << p.global_size() - fluid
        << " walls), " << fewest << " to " << most << " per rank; kernel " << physics::kernel_name(s.physics.kernel)
-       << ", eos " << physics::eos_name(s.physics.eos.type);
-  if (s.physics.eos.type == physics::eos_type::ideal_gas) line << " (gamma " << s.physics.eos.ideal.gamma << ")";
+       << ", eos ";
+  if (!s.equation_of_state.empty()) line << s.equation_of_state;
+  else line << physics::eos_name(s.physics.eos.type);
+  if (s.equation_of_state.empty() && s.physics.eos.type == physics::eos_type::ideal_gas)
+    line << " (gamma " << s.physics.eos.ideal.gamma << ")";
 }
 
 /// Neighbours per particle over all ranks (the progress line's mean, at any step).

@@ -1,0 +1,54 @@
+// Collective read-only open of an HDF5 file (see collective_open.hh).
+#include "flecsi_lite/io/hdf5/collective_open.hh"
+
+#include "flecsi_lite/io/collective_agreement.hh"
+#include "flecsi_lite/io/hdf5/h5part_precheck.hh"
+#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
+#include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
+#include "flecsi_lite/io/io_error.hh"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+namespace flecsi_lite::io {
+
+namespace {
+// Rank 0's look at the file before HDF5 opens it, for a precise message.
+void check_readable_hdf5(const std::string& path, const std::string& kind) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throw file_error("cannot open '" + path + "': no such file");
+  if (std::filesystem::is_directory(status))
+    throw file_error("cannot open '" + path + "': it is a directory, not " + kind);
+  std::ifstream probe(path, std::ios::binary);
+  if (!probe) throw file_error("cannot read '" + path + "': " + std::strerror(errno));
+  const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
+  if (is_hdf5 == 0) throw file_error("'" + path + "' is not an HDF5 file (no HDF5 signature)");
+  if (is_hdf5 < 0) throw file_error("cannot read '" + path + "'" + hdf5_reason());
+  if (const std::string crash = h5part::metadata_crash_check(path); !crash.empty()) throw file_error(crash);
+}
+} // namespace
+
+hdf5_handle open_for_reading_collectively(const std::string& path, MPI_Comm comm, const std::string& kind) {
+  agree(comm, [&] {
+    if (rank_of(comm) == 0) check_readable_hdf5(path, kind);
+  });
+  auto access = mpio_file_access(comm);
+  auto file = file_handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()));
+  std::optional<failure_record> failed;
+  if (!file)
+    failed = failure_record{failure::file,
+                            "'" + path + "' is truncated or corrupted: HDF5 cannot open it" + hdf5_reason()};
+  try {
+    raise_if_any(comm, failed);
+  } catch (...) {
+    file.release();  // a parallel close on only the ranks that opened it would never return
+    throw;
+  }
+  return file;
+}
+
+} // namespace flecsi_lite::io

@@ -1,0 +1,20 @@
+// Opening an existing HDF5 file for reading on every rank of a communicator, with the checks
+// that turn a wrong path or a damaged file into one clear error on every rank (the H5Part and
+// the GADGET/SWIFT readers share it).
+#pragma once
+
+#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+
+#include <mpi.h>
+
+#include <string>
+
+namespace flecsi_lite::io {
+
+/// Collective. Rank 0 first checks that `path` is a readable regular file with an HDF5 signature
+/// whose metadata does not crash libhdf5 (h5part_precheck.hh); then every rank opens it read-only
+/// through MPI-IO. Throws file_error on every rank when any check or any rank's open fails.
+/// `kind` names what the file should be in the messages ("an H5Part file").
+hdf5_handle open_for_reading_collectively(const std::string& path, MPI_Comm comm, const std::string& kind);
+
+} // namespace flecsi_lite::io
