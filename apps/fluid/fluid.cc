@@ -332,6 +332,10 @@ int run(const app::run_context& context) {
   s.fluid = fl::fluid_parameters().read(context.parameters());
   if (s.physics.adaptive_smoothing_length)
     throw runtime::parameter_error("fluid: adaptive_smoothing_length = true: the liquid keeps h = h_factor dx");
+  if (s.physics.individual_time_steps())
+    throw runtime::parameter_error("fluid: time_steps = individual is not supported (the weakly compressible "
+                                   "liquid's steps are all set by its sound speed c0, so one step for all loses "
+                                   "nothing): use time_steps = global");
   // A checkpoint holds drho/dt and the walls' own velocity (fluid_fields.hh); initial data would not.
   if (!s.files.initial_data.empty())
     throw runtime::parameter_error("fluid: initial_data = '" + s.files.initial_data +

@@ -19,6 +19,8 @@ public:
     : launch_(std::move(l)), value_(std::move(value)) {}
 
   bool ready() const { return !launch_ || launch_->finished(); }
+  /// False for a default-constructed future (no launch will give it a value).
+  bool valid() const { return value_ != nullptr; }
   void wait() const {
     if (launch_) execution::executor::instance().wait(*launch_);
   }

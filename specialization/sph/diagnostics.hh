@@ -92,6 +92,8 @@ void progress_line(simulation<D>& s) {
        << (s.time > s.started_time ? s.elapsed * (s.run.end_time - s.time) / (s.time - s.started_time) : 0.0)
        << " s  " << std::scientific << std::setprecision(3) << rate << " particle-steps/s  "
        << std::fixed << std::setprecision(1) << s.mean_neighbours << " neighbours";
+  if (s.physics.individual_time_steps() && s.active_targets.valid())
+    line << "  " << std::setprecision(0) << s.active_targets.get() << " active";
   flecsi_lite::log::info() << line.str();
 }
 
@@ -127,6 +129,16 @@ void run_summary(simulation<D>& s) {
                            << " neighbour searches; bytes per owned particle (rank 0): "
                            << std::setprecision(3) << bytes.fields << " in fields, " << bytes.neighbour_lists
                            << " in neighbour lists";
+  if (s.physics.individual_time_steps()) {
+    const double steps = static_cast<double>(std::max(1L, s.step - s.started_step));
+    const double particles = static_cast<double>(std::max<std::uint64_t>(1, s.particles->global_size()));
+    flecsi_lite::log::info() << "sph: individual time steps: " << std::setprecision(6) << s.particle_updates
+                             << " particle updates in " << s.step - s.started_step << " steps ("
+                             << std::setprecision(4) << s.particle_updates / steps << " per step, "
+                             << 100 * s.particle_updates / (steps * particles) << "% of the particles; "
+                             << (s.elapsed > 0 ? s.particle_updates / s.elapsed : 0.0) << " updates/s), "
+                             << std::setprecision(6) << s.woken << " woken by the limiter";
+  }
   s.balance.settle();
   if (s.balance.distributions > 0)
     flecsi_lite::log::info() << "sph: balance (" << balance_names().name(s.physics.balance) << ", "

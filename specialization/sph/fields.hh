@@ -34,7 +34,8 @@ enum class particle_kind : std::int32_t { fluid = 0, wall = 1 };
 /// what the next step reads besides (accelerations and du/dt of the last force evaluation, grad-h
 /// and pressure terms, the Balsara inputs, the walls' accumulators), so that a restart continues
 /// bitwise, and the distribution bookkeeping. Initial data: x [y z], m, h, u required; vx vy vz,
-/// rho, id, kind optional. The rest (half-step values) is recomputed in every step.
+/// rho, id, kind optional. The rest (half-step values with global steps) is recomputed in every
+/// step; individual time steps add their bins and step bounds (and the half-step values).
 template<int D>
 struct fields {
   template<class T>
@@ -81,9 +82,22 @@ struct fields {
   static inline const definition<double> gravitational_potential{"phi", persist::output().restart()};
   static inline const definition<double> zeta_over_omega{"zeta_over_omega", persist::restart()};
   static inline const definition<vector<D>> gravity_acceleration{"gravity_acceleration"};
-  // In memory only: recomputed in every step.
-  static inline const definition<vector<D>> velocity_half{"velocity_half"};  ///< v at the half step (leapfrog)
-  static inline const definition<double> internal_energy_half{"u_half"};
+  // The half-step values of the leapfrog: recomputed in every step with global time steps; with
+  // individual ones a particle keeps them over its step (restart only, time_steps = individual).
+  static inline const definition<vector<D>> velocity_half{
+    "velocity_half", persist::as("vx_half", "vy_half", "vz_half").restart()};
+  static inline const definition<double> internal_energy_half{"u_half", persist::restart()};
+  // Individual time steps only (time_bins.hh; in the files with time_steps = individual): the
+  // particle's bin (its step is 2^bin ticks of the timeline), where its step began and ends
+  // (ticks; a woken particle's end comes early), and the length its first kick took.
+  static inline const definition<std::int32_t> time_bin{"time_bin", persist::output().restart()};
+  static inline const definition<std::int64_t> step_begin{"step_begin", persist::restart()};
+  static inline const definition<std::int64_t> step_end{"step_end", persist::restart()};
+  static inline const definition<std::int64_t> kicked_ticks{"kicked_ticks", persist::restart()};
+  /// In memory only: each active particle's own criterion of the last force pass, and the
+  /// smallest bin among its neighbours (the limiter's input).
+  static inline const definition<double> own_time_step{"own_time_step"};
+  static inline const definition<std::int32_t> neighbour_bin{"neighbour_bin"};
   // Restart only: the distribution bookkeeping (redistribution.hh). Path length since the last
   // distribution, h and position then: when to distribute again, and the keys of that
   // distribution, so that a restart sums over neighbours in the writing run's order (restart.hh).

@@ -88,7 +88,8 @@ namespace detail {
 /// gravity) the tree's acceleration is added, and the grad-h gravity term with in.zeta_over_omega.
 template<int D, flecsi_lite::privilege Ghost>
 double force_loop(const neighbourhood<D>& neighbours, const physics_settings& settings, double earlier,
-                  const force_fields<D>& in, ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt) {
+                  const force_fields<D>& in, ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt,
+                  wo<double> own_time_step) {
   const neighbour_walk<D> walk(neighbours);
   const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
   double smallest = std::numeric_limits<double>::max();
@@ -106,12 +107,16 @@ double force_loop(const neighbourhood<D>& neighbours, const physics_settings& se
           for (int k = 0; k < D; ++k) dv_dt[k] += in.gravity_acceleration[a][k];
         acceleration(a) = dv_dt;
         du_dt(a) = du;
-        if (kind(a) != particle_kind::fluid) return;
+        if (kind(a) != particle_kind::fluid) {
+          own_time_step(a) = std::numeric_limits<double>::infinity();
+          return;
+        }
         double a2 = 0;
         for (int k = 0; k < D; ++k) a2 += dv_dt[k] * dv_dt[k];
         const double h_a = in.h[a];
         double dt = physics::courant_time_step(settings.courant, h_a, signal);
         if (a2 > 0) dt = std::min(dt, settings.acceleration_factor * std::sqrt(h_a / std::sqrt(a2)));
+        own_time_step(a) = dt;
         local_smallest = std::min(local_smallest, dt);
       },
       Kokkos::Min<double>(smallest), "sph::compute_forces", target_schedule);
@@ -149,10 +154,10 @@ double compute_forces(neighbours_ro<D> neighbours, physics_settings settings, do
                       ro_neighbours<double, Ghost> rho, ro_neighbours<double, Ghost> P,
                       ro_neighbours<double, Ghost> cs, ro_neighbours<double, Ghost> pressure_term,
                       ro_neighbours<double, Ghost> u, ro_neighbours<double, Ghost> balsara, ro<particle_kind> kind,
-                      wo<vector<D>> acceleration, wo<double> du_dt) {
+                      wo<vector<D>> acceleration, wo<double> du_dt, wo<double> own_time_step) {
   const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
                                    P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
-  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, kind, acceleration, du_dt);
+  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, kind, acceleration, du_dt, own_time_step);
 }
 
 /// The same with self-gravity (Price & Monaghan 2007, sec. 3): dv_a/dt also has
@@ -168,13 +173,14 @@ double compute_forces_with_gravity(neighbours_ro<D> neighbours, physics_settings
                                    ro_neighbours<double, Ghost> cs, ro_neighbours<double, Ghost> pressure_term,
                                    ro_neighbours<double, Ghost> u, ro_neighbours<double, Ghost> balsara,
                                    ro_neighbours<double, Ghost> zeta_over_omega, ro<vector<D>> gravity_acceleration,
-                                   ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt) {
+                                   ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt,
+                                   wo<double> own_time_step) {
   detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
                              P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
   if (settings.gravity.grad_h) in.zeta_over_omega = zeta_over_omega.data();
   in.gravity_acceleration = gravity_acceleration.data();
   in.half_G = 0.5 * settings.gravity.constant;
-  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, kind, acceleration, du_dt);
+  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, kind, acceleration, du_dt, own_time_step);
 }
 
 } // namespace flecsph::sph

@@ -44,11 +44,16 @@ struct neighbourhood {
   /// particle is owned data), and the others, whose lists hold a ghost; each ascending, together
   /// every target once. Filled with the lists (split_targets).
   std::vector<std::uint32_t> interior, boundary;
+  /// With individual time steps, the active targets of each set (time_bins.hh, select_active):
+  /// the pair tasks then sum for those only. A search selects every target again.
+  std::vector<std::uint32_t> active_interior, active_boundary;
+  bool active_selected = false;
 
   std::size_t size() const { return lists.size(); }
   /// The targets of a pair task's launch, chosen by its ghost privilege: without ghost access
-  /// (na) the interior ones, with it the boundary ones.
+  /// (na) the interior ones, with it the boundary ones (the active ones among them when selected).
   const std::vector<std::uint32_t>& targets(flecsi_lite::privilege ghost) const {
+    if (active_selected) return ghost == flecsi_lite::na ? active_interior : active_boundary;
     return ghost == flecsi_lite::na ? interior : boundary;
   }
   /// Mean number of list entries per target (itself included).
@@ -58,7 +63,9 @@ struct neighbourhood {
   std::size_t bytes() const {
     return lists.offsets.capacity() * sizeof(std::size_t) + lists.neighbours.capacity() * sizeof(std::uint32_t) +
            lists.shifts.capacity() * sizeof(tree::shift_code) + listed_x.capacity() * sizeof(vector<D>) +
-           listed_h.capacity() * sizeof(double) + (interior.capacity() + boundary.capacity()) * sizeof(std::uint32_t);
+           listed_h.capacity() * sizeof(double) +
+           (interior.capacity() + boundary.capacity() + active_interior.capacity() + active_boundary.capacity()) *
+             sizeof(std::uint32_t);
   }
 };
 
@@ -132,6 +139,7 @@ void split_targets(neighbourhood<D>& n) {
   }, "sph::split_targets");
   n.interior.clear();
   n.boundary.clear();
+  n.active_selected = false;
   for (std::size_t a = 0; a < owned; ++a)
     (needs_ghosts[a] ? n.boundary : n.interior).push_back(static_cast<std::uint32_t>(a));
 }

@@ -12,17 +12,22 @@
 namespace flecsph::sph {
 
 /// The registered fields that the files of run `s` hold (as their roles say): all but the
-/// self-gravity fields when gravity is off, so that such a run writes and reads what it did
-/// before gravity existed.
+/// self-gravity fields when gravity is off and the individual time steps' fields with global
+/// steps, so that such a run writes and reads what it did before they existed.
 template<int D>
 std::vector<flecsi_lite::data::registered_field> files_fields(const simulation<D>& s) {
   // A field's index in the registry is its id: the gravity fields stay, without roles.
   auto all = flecsi_lite::data::registered_fields<particle_tree<D>>();
-  if (s.physics.gravity.enabled) return all;
   using f = fields<D>;
-  for (auto& field : all)
-    if (field.name == f::gravitational_potential.name() || field.name == f::zeta_over_omega.name())
+  const bool gravity = s.physics.gravity.enabled, individual = s.physics.individual_time_steps();
+  for (auto& field : all) {
+    const bool gravity_field = field.name == f::gravitational_potential.name() || field.name == f::zeta_over_omega.name();
+    const bool individual_field = field.name == f::velocity_half.name() || field.name == f::internal_energy_half.name() ||
+                                  field.name == f::time_bin.name() || field.name == f::step_begin.name() ||
+                                  field.name == f::step_end.name() || field.name == f::kicked_ticks.name();
+    if ((gravity_field && !gravity) || (individual_field && !individual))
       field.persistence = flecsi_lite::data::persistence();
+  }
   return all;
 }
 

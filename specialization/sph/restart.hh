@@ -75,6 +75,52 @@ conserved_totals<D> load_totals(const flecsi_lite::io::run_state& state, bool gr
     t.angular_momentum[k] = get("initial_angular_momentum_" + std::to_string(k));
   return t;
 }
+/// Individual time steps: the timeline (origin, tick, now, next) as run-state entries, and back.
+inline void store_timeline(const timeline& clock, flecsi_lite::io::run_state& state) {
+  state["timeline_origin"] = clock.origin;
+  state["timeline_tick"] = clock.tick;
+  state["timeline_now"] = clock.now;
+  state["timeline_next"] = clock.next;
+}
+
+/// The checkpoint's timeline into s.clock when s has individual time steps; an error naming the
+/// file and key time_steps when the checkpoint was written with the other stepping, or naming
+/// end_time when the run's end is not the timeline's (its ticks are fractions of the span).
+template<int D>
+void load_timeline(simulation<D>& s, const flecsi_lite::io::run_state& state, const std::string& path) {
+  const bool written_individual = state.count("timeline_tick") > 0;
+  if (written_individual != s.physics.individual_time_steps())
+    throw flecsi_lite::io::layout_error(
+      "checkpoint '" + path + "' was written with time_steps = " + (written_individual ? "individual" : "global") +
+      ", this run has time_steps = " + (written_individual ? "global" : "individual") +
+      ": a run continues with the stepping it started with");
+  if (!written_individual) return;
+  const auto real = [&](const std::string& name) {
+    return flecsi_lite::io::attribute_as<double>(checkpoint_entry(state, name, path),
+                                                 "run state '" + name + "' of '" + path + "'");
+  };
+  const auto integer = [&](const std::string& name) {
+    return flecsi_lite::io::attribute_as<std::int64_t>(checkpoint_entry(state, name, path),
+                                                       "run state '" + name + "' of '" + path + "'");
+  };
+  s.clock.origin = real("timeline_origin");
+  s.clock.tick = real("timeline_tick");
+  s.clock.now = integer("timeline_now");
+  s.clock.next = integer("timeline_next");
+  if (!(s.clock.now >= 0 && s.clock.now < s.clock.next && s.clock.next <= timeline::span && s.clock.tick > 0))
+    throw flecsi_lite::io::layout_error("checkpoint '" + path + "': the timeline entries (now " +
+                                        std::to_string(s.clock.now) + ", next " + std::to_string(s.clock.next) +
+                                        ") are not a step within the span of 2^40 ticks");
+  if (timeline::spanning(s.clock.origin, s.run.end_time).tick != s.clock.tick) {
+    std::ostringstream m;
+    m.precision(17);
+    m << "checkpoint '" << path << "' holds individual time steps on a timeline ending at t = " << s.clock.end_time()
+      << ", this run has end_time = " << s.run.end_time
+      << ": the bins are fractions of that span, so the run continues only with end_time = " << s.clock.end_time();
+    throw flecsi_lite::io::layout_error(m.str());
+  }
+}
+
 /// Exchanges the current positions and h with those of the last distribution (twice: back).
 template<int D>
 void swap_distribution_state(rw<vector<D>> x, rw<double> h, rw<vector<D>> distributed_x, rw<double> distributed_h) {
@@ -148,6 +194,7 @@ template<int D>
 void write_restart_checkpoint(simulation<D>& s, const std::string& path, flecsi_lite::io::run_state state) {
   state["dimension"] = std::int64_t{D};
   detail::store_totals(s.initial_totals, s.physics.gravity.enabled, state);
+  if (s.physics.individual_time_steps()) detail::store_timeline(s.clock, state);
   flecsi_lite::io::write_checkpoint(path, {s.time, s.step, s.dt}, state, [&](flecsi_lite::io::h5part_writer& out) {
     using flecsi_lite::data::role;
     flecsi_lite::data::write_registered_fields(*s.particles, files_fields(s), out, role::output | role::restart);
@@ -182,6 +229,7 @@ flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::
   s.step = contents.info.step;
   s.dt = contents.info.dt;
   s.initial_totals = detail::load_totals<D>(contents.state, s.physics.gravity.enabled, path);
+  detail::load_timeline(s, contents.state, path);
   detail::distribute_as_written(s);
   s.restarted = true;
   return contents.state;

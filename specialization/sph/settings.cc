@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
 namespace flecsph::sph {
 
@@ -90,9 +91,29 @@ physics_block declare_physics(const physics_settings& defaults) {
     .at_most(1);
   p.boolean("gravity_grad_h", member(&physics_settings::gravity, &gravity_settings::grad_h),
             "grad-h gravity term of Price & Monaghan (2007) (off only to measure its effect)");
+  p.choice("time_steps", member(&physics_settings::time_steps, &time_step_settings::stepping),
+           time_stepping_names(), "one step for all particles, or each particle its own (block time steps)");
+  p.integer("time_step_limiter", member(&physics_settings::time_steps, &time_step_settings::limiter),
+            "individual steps: largest ratio of a particle's step to its neighbours' (power of two; 0: off)")
+    .range(0, 1 << 20);
+  p.real("max_time_step", member(&physics_settings::time_steps, &time_step_settings::max_time_step),
+         "individual steps: the largest step (0: the run's span)")
+    .range(0, 1e50);
+  p.check([](const physics_settings& s) {
+    const int v = s.time_steps.limiter;
+    if (v != 0 && (v < 2 || (v & (v - 1)) != 0))
+      throw flecsi_lite::runtime::parameter_error("time_step_limiter = " + std::to_string(v) +
+                                                  " must be 0 (off) or a power of two >= 2 (2, 4, 8, ...)");
+  });
   return p;
 }
 } // namespace
+
+const flecsi_lite::runtime::name_table<time_stepping>& time_stepping_names() {
+  static const flecsi_lite::runtime::name_table<time_stepping> table{
+    "time stepping", {{"global", time_stepping::global}, {"individual", time_stepping::individual}}};
+  return table;
+}
 
 const flecsi_lite::runtime::name_table<gravity_criterion>& gravity_criterion_names() {
   static const flecsi_lite::runtime::name_table<gravity_criterion> table{

@@ -40,6 +40,23 @@ struct gravity_settings {
   bool grad_h = true;
 };
 
+/// One time step for all particles (the smallest of their criteria), or each particle its own
+/// power-of-two fraction of the run (block time steps, time_bins.hh).
+enum class time_stepping { global, individual };
+
+/// The parameter-file names of the time stepping ("global", "individual").
+const flecsi_lite::runtime::name_table<time_stepping>& time_stepping_names();
+
+/// Individual time steps (GADGET-2: Springel 2005, MNRAS 364, 1105, sec. 5; SWIFT): each particle
+/// in the bin of its own criterion, no step more than `limiter` times its neighbours' (Saitoh &
+/// Makino 2009, ApJ 697, L99), at most max_time_step.
+struct time_step_settings {
+  time_stepping stepping = time_stepping::global;
+  /// Largest ratio of a particle's step to its neighbours' (a power of two; 0: no limiter).
+  int limiter = 4;
+  double max_time_step = 0;  ///< 0: no bound but the run's span
+};
+
 struct physics_settings {
   physics::kernel_type kernel = physics::kernel_type::cubic_spline;
   physics::equation_of_state eos{};
@@ -74,6 +91,8 @@ struct physics_settings {
   /// last search (the seed's neighbour-based balancing, section 2.3.3, as FleCSPH offers).
   flecsi_lite::topology::ntree::balance balance = flecsi_lite::topology::ntree::balance::count;
   gravity_settings gravity{};
+  time_step_settings time_steps{};
+  bool individual_time_steps() const { return time_steps.stepping == time_stepping::individual; }
 };
 
 /// A parameter_error naming the key `gravity` unless gravity is off or the problem is 3D with no

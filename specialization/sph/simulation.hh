@@ -6,6 +6,7 @@
 #include "specialization/sph/conserved.hh"
 #include "specialization/sph/neighbourhood.hh"
 #include "specialization/sph/settings.hh"
+#include "specialization/sph/timeline.hh"
 
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/topology/ntree.hh"
@@ -91,8 +92,14 @@ struct simulation {
   gravity_record last_gravity;  ///< self-gravity only
   balance_record balance;
 
+  // Individual time steps only (time_bins.hh): the timeline, and the particles updated.
+  timeline clock;
+  double particle_updates = 0;  ///< fluid particles kicked, summed over the steps
+  double woken = 0;             ///< particles the limiter woke
+
   // Between the actions of one step.
   flecsi_lite::future<double> next_time_step;
+  flecsi_lite::future<double> active_targets, kicked;  ///< individual time steps
 };
 
 } // namespace flecsph::sph

@@ -50,7 +50,9 @@ flecsi_lite::control::control_model<State> make_control_model() {
     auto search = on("initialize", "search", [](base& s) {
       if (!s.particles) throw std::logic_error("sph: the initial_data point must create the particles");
       // A restart distributed and searched as the run it continues had (read_restart_checkpoint).
-      if (!s.restarted) update_neighbours(s, true);
+      if (s.restarted) return;
+      if (s.physics.individual_time_steps()) start_timeline(s);  // every particle active at t = 0
+      update_neighbours(s, true);
     });
     auto density = on("initialize", "density", [](base& s) {
       if (!s.restarted) update_density(s);

@@ -11,6 +11,7 @@
 #include "specialization/sph/list_reuse.hh"
 #include "specialization/sph/redistribution.hh"
 #include "specialization/sph/simulation.hh"
+#include "specialization/sph/time_bins.hh"
 
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/runtime.hh"
@@ -112,8 +113,12 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
   }
   double count_imbalance = 0;
   if (redistribute) {
-    if (s.physics.balance == tree::balance::work)  // the last lists' costs (none yet: counts)
-      flecsi_lite::execute<measure_work<D>>(s.neighbours, f::work(p));
+    if (s.physics.balance == tree::balance::work) {  // the last lists' costs (none yet: counts)
+      if (s.physics.individual_time_steps())
+        flecsi_lite::execute<measure_active_work<D>>(s.neighbours, f::time_bin(p), f::work(p));
+      else
+        flecsi_lite::execute<measure_work<D>>(s.neighbours, f::work(p));
+    }
     count_imbalance = p.distribute().count_imbalance;
     flecsi_lite::execute<mark_distributed<D>>(f::smoothing_length()(p), f::position()(p), f::drift(p),
                                               f::distributed_h(p), f::distributed_position(p));
@@ -121,14 +126,16 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
   } else if (search) {
     p.refresh_local_tree();
   }
-  if (!search) return;
-  // A task: after the refit, and after the last readers of the old lists.
-  find_neighbours(p, s.neighbours, s.physics.list_skin);
-  ++s.searches;
-  if (redistribute)
-    s.balance.expect(count_imbalance,
-                     flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::max>(s.neighbours),
-                     flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::sum>(s.neighbours));
+  if (search) {
+    // A task: after the refit, and after the last readers of the old lists.
+    find_neighbours(p, s.neighbours, s.physics.list_skin);
+    ++s.searches;
+    if (redistribute)
+      s.balance.expect(count_imbalance,
+                       flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::max>(s.neighbours),
+                       flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::sum>(s.neighbours));
+  }
+  if (s.physics.individual_time_steps()) select_active_targets(s);
 }
 
 /// Density and smoothing length; when some h outgrew the searched reach, searches again with the
@@ -174,12 +181,13 @@ void update_density(simulation<D>& s) {
   }
 }
 
-/// Velocity gradients (for the Balsara switch), pressure and sound speed.
+/// Velocity gradients (for the Balsara switch, and with individual time steps for the drift of the
+/// inactive particles' density and h), pressure and sound speed.
 template<int D>
 void update_pressure(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
-  if (s.physics.balsara)
+  if (s.physics.balsara || s.physics.individual_time_steps())
     std::apply(
       [&](auto... field) {
         flecsi_lite::execute<compute_velocity_gradients<D, flecsi_lite::na>>(s.neighbours, s.physics, field...);
@@ -203,7 +211,8 @@ void update_forces(simulation<D>& s) {
   const auto fields_read = std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
                                            f::density(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p),
                                            f::internal_energy(p), f::balsara(p));
-  const auto fields_written = std::make_tuple(f::kind(p), f::acceleration(p), f::internal_energy_rate(p));
+  const auto fields_written =
+    std::make_tuple(f::kind(p), f::acceleration(p), f::internal_energy_rate(p), f::own_time_step(p));
   const double none = std::numeric_limits<double>::max();
   if (s.physics.gravity.enabled) {
     s.next_time_step = std::apply(
@@ -230,6 +239,7 @@ template<int D>
 void first_kick_and_drift(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
+  if (s.physics.individual_time_steps()) return first_kick_and_drift_bins(s);
   flecsi_lite::execute<kick_drift<D>>(s.dt, p.space(), f::kind(p), f::position()(p), f::velocity(p),
                                       f::velocity_half(p), f::internal_energy(p), f::internal_energy_half(p),
                                       f::acceleration(p), f::internal_energy_rate(p), f::boundary_impulse(p),
@@ -240,16 +250,18 @@ template<int D>
 void second_kick(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
+  if (s.physics.individual_time_steps()) return second_kick_bins(s);
   flecsi_lite::execute<kick<D>>(s.dt, f::kind(p), f::velocity_half(p), f::internal_energy_half(p),
                                 f::acceleration(p), f::internal_energy_rate(p), f::velocity(p),
                                 f::internal_energy(p), f::boundary_impulse(p), f::boundary_work(p));
 }
 
 /// The step just taken moves the clock; the next step is the global minimum of the particles'
-/// time steps, shortened to end exactly at end_time. The minimum over ranks is exact, so every
-/// rank count takes the same steps.
+/// time steps, shortened to end exactly at end_time (individual time steps: choose_time_bins).
+/// The minimum over ranks is exact, so every rank count takes the same steps.
 template<int D>
 void choose_time_step(simulation<D>& s, bool advance) {
+  if (s.physics.individual_time_steps()) return choose_time_bins(s, advance);
   if (advance) {
     const bool last = s.dt >= s.run.end_time - s.time;
     s.time = last ? s.run.end_time : s.time + s.dt;

@@ -1,0 +1,350 @@
+// Individual (block) time steps: each particle advances by 2^bin ticks of the timeline
+// (timeline.hh), its bin the largest whose step its own criterion allows (Courant with the
+// signal speed, acceleration), kick-drift-kick per particle as in GADGET-2 (Springel 2005, MNRAS
+// 364, 1105, sec. 5) and SWIFT:
+//   at the start of its step (tick b, length L):  v_half = v + L/2 a,  u_half = u + L/2 du
+//   every system step (tick n to n'):           x += (n' - n) v_half for every fluid particle,
+//                                                v, u predicted at n': v_half + (n' - b - L/2) a,
+//                                                rho, h of the inactive ones drifted with div v
+//   at its end b + L (active):                   density, forces; v = v_half + L/2 a_new
+// The system step goes from now to the earliest end among the particles; only the particles that
+// end there (the active ones) get density, velocity gradients and forces; the others are drifted
+// and predicted, so the active ones see them at the current time. The time-step limiter (Saitoh
+// & Makino 2009, ApJ 697, L99; SWIFT's --limiter) keeps every particle's bin at most
+// log2(time_step_limiter) above the smallest among its neighbours: an active particle takes the
+// smaller bin, an inactive one is woken, its step ending at the next multiple of the smaller step
+// with its first kick shortened to the new length. Wall particles are active in every system step.
+// Every decision is on integers of particle data (exact minima over ranks), so the results do not
+// depend on the rank count.
+#pragma once
+
+#include "specialization/sph/integrator.hh"
+#include "specialization/sph/neighbourhood.hh"
+#include "specialization/sph/simulation.hh"
+#include "specialization/sph/tasks.hh"
+#include "specialization/sph/timeline.hh"
+
+#include "specialization/physics/kernels.hh"
+
+#include "flecsi_lite/execution.hh"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace flecsph::sph {
+
+/// The bin walls carry: they never limit a neighbour.
+inline constexpr std::int32_t wall_bin = timeline::bins;
+
+/// All particles active at tick 0 (every step ends there), in the largest bin until their first
+/// criterion is known.
+template<int D>
+void start_time_bins(wo<std::int32_t> time_bin, wo<std::int64_t> step_begin, wo<std::int64_t> step_end) {
+  flecsi_lite::forall(time_bin.size(), [&](std::size_t a) {
+    time_bin(a) = wall_bin;
+    step_begin(a) = 0;
+    step_end(a) = 0;
+  }, "sph::start_time_bins");
+}
+
+/// The targets whose step ends at tick `next`, for the pair tasks (neighbourhood::targets).
+/// Returns how many there are.
+template<int D>
+double select_active(typename tracked_neighbourhood<D>::template accessor<flecsi_lite::rw> neighbours,
+                     std::int64_t next, ro<std::int64_t> step_end) {
+  auto& n = *neighbours;
+  const auto pick = [&](const std::vector<std::uint32_t>& all, std::vector<std::uint32_t>& active) {
+    active.clear();
+    for (const std::uint32_t a : all)
+      if (step_end(a) == next) active.push_back(a);
+  };
+  pick(n.interior, n.active_interior);
+  pick(n.boundary, n.active_boundary);
+  n.active_selected = true;
+  return static_cast<double>(n.active_interior.size() + n.active_boundary.size());
+}
+
+/// The first kick of the particles whose step starts now, the drift of every fluid particle to
+/// `clock.next` and the prediction of v and u there (walls: their accumulators, as kick_drift).
+template<int D>
+void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<particle_kind> kind,
+                     rw<vector<D>> x, rw<vector<D>> v, rw<vector<D>> v_half, rw<double> u, rw<double> u_half,
+                     ro<vector<D>> acceleration, ro<double> du_dt, ro<double> velocity_divergence, rw<double> rho,
+                     rw<double> h, rw<vector<D>> impulse, rw<double> work, rw<double> drift,
+                     rw<std::int32_t> time_bin, rw<std::int64_t> step_begin, rw<std::int64_t> step_end) {
+  const double dt = clock.duration(clock.next - clock.now), half_dt = 0.5 * dt;
+  flecsi_lite::forall(x.size(), [&](std::size_t a) {
+    const vector<D>& acc = acceleration(a);
+    if (kind(a) != particle_kind::fluid) {
+      for (int k = 0; k < D; ++k) impulse(a)[k] += half_dt * acc[k];
+      work(a) += half_dt * du_dt(a);
+      v_half(a) = v(a);
+      u_half(a) = u(a);
+      time_bin(a) = wall_bin;
+      step_begin(a) = clock.now;
+      step_end(a) = clock.next;
+      return;
+    }
+    const double length = clock.duration(step_end(a) - step_begin(a));
+    if (step_begin(a) == clock.now) {
+      for (int k = 0; k < D; ++k) v_half(a)[k] = v(a)[k] + 0.5 * length * acc[k];
+      u_half(a) = u(a) + 0.5 * length * du_dt(a);
+    }
+    double speed2 = 0;
+    for (int k = 0; k < D; ++k) {
+      x(a)[k] += dt * v_half(a)[k];
+      speed2 += v_half(a)[k] * v_half(a)[k];
+    }
+    drift(a) += dt * std::sqrt(speed2);
+    wrap_periodic<D>(space, x(a));
+    const double since_middle = clock.duration(clock.next - step_begin(a)) - 0.5 * length;
+    for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + since_middle * acc[k];
+    u(a) = u_half(a) + since_middle * du_dt(a);
+    if (step_end(a) == clock.next) return;  // active at next: its density is computed there
+    // Inactive: rho and h follow the flow's compression (drho/dt = -rho div v, h ~ rho^(-1/D)),
+    // so that active neighbours see them at the current time (GADGET-2, sec. 5; SWIFT's drift).
+    const double stretch = std::clamp(dt * velocity_divergence(a), -0.5, 0.5);
+    rho(a) *= std::exp(-stretch);
+    if (adaptive_h) h(a) *= std::exp(stretch / D);
+  }, "sph::kick_drift_bins");
+}
+
+/// The second kick of the active particles (their step ends at clock.next) with the new forces.
+/// Returns how many fluid particles it kicked.
+template<int D>
+double kick_bins(timeline clock, ro<particle_kind> kind, ro<vector<D>> v_half, ro<double> u_half,
+                 ro<vector<D>> acceleration, ro<double> du_dt, ro<std::int64_t> step_begin,
+                 ro<std::int64_t> step_end, rw<vector<D>> v, rw<double> u, rw<vector<D>> impulse,
+                 rw<double> work) {
+  const double half_dt = 0.5 * clock.duration(clock.next - clock.now);
+  double kicked = 0;
+  flecsi_lite::forall_reduce(
+    v.size(),
+    [&](std::size_t a, double& count) {
+      if (step_end(a) != clock.next) return;
+      const vector<D>& acc = acceleration(a);
+      if (kind(a) != particle_kind::fluid) {
+        for (int k = 0; k < D; ++k) impulse(a)[k] += half_dt * acc[k];
+        work(a) += half_dt * du_dt(a);
+        v(a) = v_half(a);
+        u(a) = u_half(a);
+        return;
+      }
+      const double half = 0.5 * clock.duration(step_end(a) - step_begin(a));
+      for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + half * acc[k];
+      u(a) = u_half(a) + half * du_dt(a);
+      count += 1;
+    },
+    Kokkos::Sum<double>(kicked), "sph::kick_bins");
+  return kicked;
+}
+
+/// The new bins of the particles whose step ended at clock.now (before the limiter): the largest
+/// bin whose step their criterion (own_time_step) allows, at most `largest`, at most one above the
+/// last (`first`: no last), and one whose steps can start now. Returns the smallest criterion of a
+/// particle that even one tick cannot hold (NaN as -1; the largest double when there is none).
+template<int D>
+double assign_bins(timeline clock, int largest, bool first, ro<particle_kind> kind, ro<double> own_time_step,
+                   ro<std::int64_t> step_end, rw<std::int32_t> time_bin) {
+  double failed = std::numeric_limits<double>::max();
+  flecsi_lite::forall_reduce(
+    time_bin.size(),
+    [&](std::size_t a, double& worst) {
+      if (kind(a) != particle_kind::fluid || step_end(a) != clock.now) return;
+      int bin = bin_of_step(own_time_step(a), clock.tick, largest);
+      if (bin < 0) {
+        worst = std::min(worst, std::isnan(own_time_step(a)) ? -1.0 : own_time_step(a));
+        bin = 0;
+      }
+      if (!first) bin = std::min(bin, time_bin(a) + 1);
+      time_bin(a) = aligned_bin(bin, clock.now);
+    },
+    Kokkos::Min<double>(failed), "sph::assign_bins");
+  return failed;
+}
+
+/// The smallest bin among each owned particle's neighbours within the kernel support of either
+/// (|r_ab| < 2 max(h_a, h_b), the pairs of the force sums), itself included; so the same on any
+/// list skin.
+template<int D>
+void find_neighbour_bins(neighbours_ro<D> neighbours, ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h,
+                         ro_with_ghosts<std::int32_t> time_bin, wo<std::int32_t> neighbour_bin) {
+  const neighbour_walk<D> walk(*neighbours);
+  const double support2 = physics::kernel_support * physics::kernel_support;
+  flecsi_lite::forall(neighbours->size(), [&](std::size_t a) {
+    std::int32_t smallest = time_bin(a);
+    vector<D> r;
+    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
+      const std::size_t b = walk.neighbour(j);
+      const double h_max = std::max(h(a), h(b));
+      if (walk.separation(x(a), x(b), j, r) < support2 * h_max * h_max) smallest = std::min(smallest, time_bin(b));
+    }
+    neighbour_bin(a) = smallest;
+  }, "sph::find_neighbour_bins");
+}
+
+/// The limiter (`levels` = log2 of time_step_limiter; negative: off) and the new steps: a particle
+/// whose step ended now takes at most the smallest neighbour bin + levels and starts its next
+/// step; an inactive one above that bound is woken: its step ends at the next multiple of the
+/// smaller step after now, and its first kick is shortened to the new length (v_half, u_half move
+/// by half the difference times a, du), as if it had started with that step. Returns how many
+/// particles it woke.
+template<int D>
+double limit_bins(timeline clock, int levels, ro<particle_kind> kind, ro<std::int32_t> neighbour_bin,
+                  ro<vector<D>> acceleration, ro<double> du_dt, rw<std::int32_t> time_bin,
+                  rw<std::int64_t> step_begin, rw<std::int64_t> step_end, rw<vector<D>> v_half, rw<double> u_half) {
+  double woken = 0;
+  flecsi_lite::forall_reduce(
+    time_bin.size(),
+    [&](std::size_t a, double& count) {
+      if (kind(a) != particle_kind::fluid) return;
+      const std::int32_t bound = levels < 0 ? wall_bin : std::min<std::int32_t>(wall_bin, neighbour_bin(a) + levels);
+      if (step_end(a) == clock.now) {
+        time_bin(a) = std::min(time_bin(a), bound);  // smaller bins than an aligned one are aligned
+        step_begin(a) = clock.now;
+        step_end(a) = clock.now + timeline::ticks_of(time_bin(a));
+        return;
+      }
+      if (time_bin(a) <= bound) return;
+      const std::int64_t step = timeline::ticks_of(bound);
+      const std::int64_t end = (clock.now / step + 1) * step;
+      time_bin(a) = bound;
+      if (end >= step_end(a)) return;
+      const double shortening = 0.5 * clock.duration(end - step_end(a));  // < 0
+      for (int k = 0; k < D; ++k) v_half(a)[k] += shortening * acceleration(a)[k];
+      u_half(a) += shortening * du_dt(a);
+      step_end(a) = end;
+      count += 1;
+    },
+    Kokkos::Sum<double>(woken), "sph::limit_bins");
+  return woken;
+}
+
+/// The earliest end of a fluid particle's step (timeline::span when there is none), as a double
+/// (exact below 2^53).
+template<int D>
+double earliest_step_end(ro<particle_kind> kind, ro<std::int64_t> step_end) {
+  double earliest = 0;
+  flecsi_lite::forall_reduce(
+    step_end.size(),
+    [&](std::size_t a, double& e) {
+      if (kind(a) == particle_kind::fluid) e = std::min(e, static_cast<double>(step_end(a)));
+    },
+    Kokkos::Min<double>(earliest), "sph::earliest_step_end");
+  return std::min(earliest, static_cast<double>(timeline::span));  // the reduction's identity is huge
+}
+
+/// The work of a particle for balance = work: its list length times how often it is active (2^-bin
+/// relative to the whole span).
+template<int D>
+void measure_active_work(neighbours_ro<D> neighbours, ro<std::int32_t> time_bin, wo<double> work) {
+  const auto& lists = neighbours->lists;
+  flecsi_lite::forall(work.size(), [&](std::size_t a) {
+    const double count = a < lists.size() ? static_cast<double>(lists.count(a)) : 0.0;
+    work(a) = std::ldexp(count, timeline::bins - time_bin(a));
+  }, "sph::measure_active_work");
+}
+
+/// The largest bin max_time_step allows (timeline::bins without a bound).
+inline int largest_bin(const physics_settings& physics, const timeline& clock) {
+  if (!(physics.time_steps.max_time_step > 0)) return timeline::bins;
+  const int bin = bin_of_step(physics.time_steps.max_time_step, clock.tick, timeline::bins);
+  if (bin < 0) {
+    std::ostringstream m;
+    m << "sph: max_time_step = " << physics.time_steps.max_time_step << " is below the timeline's resolution "
+      << clock.tick << " (the run's span / 2^" << timeline::bins << ")";
+    throw flecsi_lite::runtime::parameter_error(m.str());
+  }
+  return bin;
+}
+
+/// log2 of time_step_limiter (-1: off).
+inline int limiter_levels(const physics_settings& physics) {
+  return physics.time_steps.limiter == 0 ? -1 : std::ilogb(static_cast<double>(physics.time_steps.limiter));
+}
+
+/// Starts the timeline at s.time, every particle active at its tick 0.
+template<int D>
+void start_timeline(simulation<D>& s) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  s.clock = timeline::spanning(s.time, s.run.end_time);
+  flecsi_lite::execute<start_time_bins<D>>(f::time_bin(p), f::step_begin(p), f::step_end(p));
+}
+
+/// The pair tasks of this system step for the particles whose step ends at s.clock.next.
+template<int D>
+void select_active_targets(simulation<D>& s) {
+  s.active_targets = flecsi_lite::reduce<select_active<D>, flecsi_lite::reduction::sum>(
+    s.neighbours, s.clock.next, fields<D>::step_end(*s.particles));
+}
+
+template<int D>
+void first_kick_and_drift_bins(simulation<D>& s) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  flecsi_lite::execute<kick_drift_bins<D>>(
+    s.clock, p.space(), s.physics.adaptive_smoothing_length, f::kind(p), f::position()(p), f::velocity(p),
+    f::velocity_half(p), f::internal_energy(p), f::internal_energy_half(p), f::acceleration(p),
+    f::internal_energy_rate(p), f::velocity_divergence(p), f::density(p), f::smoothing_length()(p),
+    f::boundary_impulse(p), f::boundary_work(p), f::drift(p), f::time_bin(p), f::step_begin(p), f::step_end(p));
+}
+
+template<int D>
+void second_kick_bins(simulation<D>& s) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  s.kicked = flecsi_lite::reduce<kick_bins<D>, flecsi_lite::reduction::sum>(
+    s.clock, f::kind(p), f::velocity_half(p), f::internal_energy_half(p), f::acceleration(p),
+    f::internal_energy_rate(p), f::step_begin(p), f::step_end(p), f::velocity(p), f::internal_energy(p),
+    f::boundary_impulse(p), f::boundary_work(p));
+}
+
+/// With individual time steps: moves the clock to the end of the step just taken (`advance`),
+/// gives the particles that ended their step there their new bins (assign_bins, then the
+/// limiter), and sets the next system step: s.clock.next, the earliest end, and s.dt.
+template<int D>
+void choose_time_bins(simulation<D>& s, bool advance) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  if (advance) {
+    s.particle_updates += s.kicked.get();
+    s.clock.now = s.clock.next;
+    s.time = s.clock.time_at(s.clock.now, s.run.end_time);
+    ++s.step;
+    const bool last = s.clock.now >= timeline::span;
+    s.finished = last || (s.run.max_steps > 0 && s.step >= s.run.max_steps);
+    if (last) return;  // dt stays the last step's, for the reports
+  }
+  const double failed = flecsi_lite::reduce<assign_bins<D>, flecsi_lite::reduction::min>(
+                          s.clock, largest_bin(s.physics, s.clock), !advance, f::kind(p), f::own_time_step(p),
+                          f::step_end(p), f::time_bin(p))
+                          .get();
+  if (failed < std::numeric_limits<double>::max()) {
+    std::ostringstream m;
+    m.precision(6);
+    m << "sph: a particle's time step " << failed << " at t = " << s.time << " (step " << s.step
+      << ") is below one tick of the individual time steps' timeline, " << s.clock.tick << " (the run's span / 2^"
+      << timeline::bins << "): its state makes the step collapse (h without neighbours, or pressures, densities "
+      << "or energies out of range), not courant = " << s.physics.courant
+      << " or acceleration_factor = " << s.physics.acceleration_factor;
+    throw std::runtime_error(m.str());
+  }
+  flecsi_lite::execute<find_neighbour_bins<D>>(s.neighbours, f::position()(p), f::smoothing_length()(p),
+                                               f::time_bin(p), f::neighbour_bin(p));
+  s.woken += flecsi_lite::reduce<limit_bins<D>, flecsi_lite::reduction::sum>(
+               s.clock, limiter_levels(s.physics), f::kind(p), f::neighbour_bin(p), f::acceleration(p),
+               f::internal_energy_rate(p), f::time_bin(p), f::step_begin(p), f::step_end(p), f::velocity_half(p),
+               f::internal_energy_half(p))
+               .get();
+  s.clock.next = static_cast<std::int64_t>(
+    flecsi_lite::reduce<earliest_step_end<D>, flecsi_lite::reduction::min>(f::kind(p), f::step_end(p)).get());
+  s.dt = s.clock.duration(s.clock.next - s.clock.now);
+}
+
+} // namespace flecsph::sph
