@@ -271,8 +271,7 @@ void describe_particles(app_state<D>& s) {
 /// Neighbours per particle over all ranks (the progress line's mean, at any step).
 template<int D>
 double mean_neighbours(const app_state<D>& s) {
-  const double total = flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::sum>(s.neighbours).get();
-  return s.particles->global_size() ? total / double(s.particles->global_size()) : 0.0;
+  return mean_list_length(s);
 }
 
 /// The values of the app's own statistics columns (none unless it set extra_statistics).

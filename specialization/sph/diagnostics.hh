@@ -76,13 +76,24 @@ double particle_steps_per_second(const simulation<D>& s) {
   return s.elapsed > 0 ? static_cast<double>(s.particles->global_size()) * steps / s.elapsed : 0.0;
 }
 
+/// Neighbour-list entries per particle over all ranks (with individual time steps, per active
+/// particle: the lists hold their rows only). Collective.
+template<int D>
+double mean_list_length(const simulation<D>& s) {
+  if (s.physics.individual_time_steps() && s.active_targets.valid()) {
+    const active_count active = s.active_targets.get();
+    return active.targets > 0 ? active.entries / active.targets : 0.0;
+  }
+  const double total = flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::sum>(s.neighbours).get();
+  return s.particles->global_size() ? total / double(s.particles->global_size()) : 0.0;
+}
+
 template<int D>
 void progress_line(simulation<D>& s) {
   s.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.started).count();
   const long every = s.run.progress_every;
   if (!(s.finished || (every > 0 && s.step % every == 0))) return;
-  const double total = flecsi_lite::reduce<neighbour_total<D>, flecsi_lite::reduction::sum>(s.neighbours).get();
-  s.mean_neighbours = s.particles->global_size() ? total / double(s.particles->global_size()) : 0.0;
+  s.mean_neighbours = mean_list_length(s);
   const double fraction = s.run.end_time > 0 ? s.time / s.run.end_time : 1.0;
   const double rate = particle_steps_per_second(s);
   std::ostringstream line;
@@ -93,7 +104,7 @@ void progress_line(simulation<D>& s) {
        << " s  " << std::scientific << std::setprecision(3) << rate << " particle-steps/s  "
        << std::fixed << std::setprecision(1) << s.mean_neighbours << " neighbours";
   if (s.physics.individual_time_steps() && s.active_targets.valid())
-    line << "  " << std::setprecision(0) << s.active_targets.get() << " active";
+    line << "  " << std::setprecision(0) << s.active_targets.get().targets << " active";
   flecsi_lite::log::info() << line.str();
 }
 

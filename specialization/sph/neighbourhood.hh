@@ -144,6 +144,32 @@ void split_targets(neighbourhood<D>& n) {
     (needs_ghosts[a] ? n.boundary : n.interior).push_back(static_cast<std::uint32_t>(a));
 }
 
+namespace detail {
+/// What every search task does after the tree's search: the shift table, the reaches, the
+/// positions and h searched with, the interior and boundary targets.
+template<int D>
+void finish_search(const tree::local_tree<D>& local, neighbourhood<D>& out, double support, double list_reach,
+                   const tree::domain<D>& space) {
+  release_spare_room(out.lists.neighbours);
+  const auto table = space.shift_table();
+  for (std::size_t c = 0; c < table.size(); ++c)
+    for (int k = 0; k < D; ++k) out.shift_table[c][k] = table[c][k];
+  out.reach = support;
+  out.list_reach = list_reach;
+  const std::size_t owned = local.owned_size();
+  out.listed_x.resize(owned);
+  out.listed_h.resize(owned);
+  const std::size_t* sorted = local.storage_to_sorted().data();
+  const auto* x = local.positions().data();
+  const double* h = local.smoothing_lengths().data();
+  flecsi_lite::forall(owned, [&](std::size_t a) {
+    out.listed_x[a] = x[sorted[a]];
+    out.listed_h[a] = h[sorted[a]];
+  }, "sph::search_neighbours::listed");
+  split_targets(out);
+}
+} // namespace detail
+
 /// The search task: fills `out` from the local tree's search over owned targets (symmetric
 /// criterion, reach `support` (1 + list_skin)), with the positions and h it searched with (the
 /// tree's sorted copies, current after a build or refit). The tree keeps its search workspaces,
@@ -155,23 +181,22 @@ void search_neighbours(typename flecsi_lite::tracked<tree::local_tree<D>>::templ
   const double list_reach = support * (1 + list_skin);
   local->find_neighbours(tree::interaction::symmetric, list_reach, space, out->lists, {},
                          tree::shift_storage::packed);
-  release_spare_room(out->lists.neighbours);
-  const auto table = space.shift_table();
-  for (std::size_t c = 0; c < table.size(); ++c)
-    for (int k = 0; k < D; ++k) out->shift_table[c][k] = table[c][k];
-  out->reach = support;
-  out->list_reach = list_reach;
-  const std::size_t owned = local->owned_size();
-  out->listed_x.resize(owned);
-  out->listed_h.resize(owned);
-  const std::size_t* sorted = local->storage_to_sorted().data();
-  const auto* x = local->positions().data();
-  const double* h = local->smoothing_lengths().data();
-  flecsi_lite::forall(owned, [&](std::size_t a) {
-    out->listed_x[a] = x[sorted[a]];
-    out->listed_h[a] = h[sorted[a]];
-  }, "sph::search_neighbours::listed");
-  split_targets(*out);
+  detail::finish_search(*local, *out, support, list_reach, space);
+}
+
+/// The same for the owned particles whose step ends at tick `next` only (individual time steps,
+/// time_bins.hh): the other rows are empty, and the search costs what the active targets need.
+template<int D>
+void search_active_neighbours(
+  typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
+  typename tracked_neighbourhood<D>::template accessor<flecsi_lite::wo> out, double support, tree::domain<D> space,
+  std::int64_t next, ro<std::int64_t> step_end) {
+  std::vector<std::uint8_t> active(step_end.size());
+  flecsi_lite::forall(active.size(), [&](std::size_t a) { active[a] = step_end(a) == next; },
+                      "sph::search_active_neighbours::mask");
+  local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, {},
+                            tree::shift_storage::packed);
+  detail::finish_search(*local, *out, support, support, space);
 }
 
 /// Launches the search of `out` on the tree of `p` (after ntree::distribute() or

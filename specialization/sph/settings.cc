@@ -100,6 +100,11 @@ physics_block declare_physics(const physics_settings& defaults) {
          "individual steps: the largest step (0: the run's span)")
     .range(0, 1e50);
   p.check([](const physics_settings& s) {
+    if (s.individual_time_steps() && s.list_skin > 0)
+      throw flecsi_lite::runtime::parameter_error(
+        "list_skin = " + std::to_string(s.list_skin) +
+        " with time_steps = individual: individual steps search the active particles of every step (their lists "
+        "only), so lists are never kept; set list_skin = 0");
     const int v = s.time_steps.limiter;
     if (v != 0 && (v < 2 || (v & (v - 1)) != 0))
       throw flecsi_lite::runtime::parameter_error("time_step_limiter = " + std::to_string(v) +

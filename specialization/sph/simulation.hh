@@ -58,6 +58,16 @@ struct balance_record {
   double work_mean() const { return distributions ? work_sum / double(distributions) : 1.0; }
 };
 
+/// Individual time steps: the active targets of a system step and their list entries.
+struct active_count {
+  double targets = 0, entries = 0;
+};
+struct active_count_sum {
+  static active_count combine(const active_count& a, const active_count& b) {
+    return {a.targets + b.targets, a.entries + b.entries};
+  }
+};
+
 template<int D>
 struct simulation {
   static constexpr int dimension = D;
@@ -99,7 +109,8 @@ struct simulation {
 
   // Between the actions of one step.
   flecsi_lite::future<double> next_time_step;
-  flecsi_lite::future<double> active_targets, kicked;  ///< individual time steps
+  flecsi_lite::future<active_count> active_targets;  ///< individual time steps
+  flecsi_lite::future<double> kicked;
 };
 
 } // namespace flecsph::sph

@@ -109,16 +109,16 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
                          .get();
     const double support = p.settings().support;
     redistribute = !ghosts_still_suffice(slack.distribution, support, s.physics.distribution_skin);
-    search = redistribute || !lists_still_suffice(slack.lists, support, s.physics.list_skin);
+    // Individual time steps search the active particles of every step (their rows only).
+    search = redistribute || s.physics.individual_time_steps() ||
+             !lists_still_suffice(slack.lists, support, s.physics.list_skin);
   }
   double count_imbalance = 0;
   if (redistribute) {
-    if (s.physics.balance == tree::balance::work) {  // the last lists' costs (none yet: counts)
-      if (s.physics.individual_time_steps())
-        flecsi_lite::execute<measure_active_work<D>>(s.neighbours, f::time_bin(p), f::work(p));
-      else
-        flecsi_lite::execute<measure_work<D>>(s.neighbours, f::work(p));
-    }
+    // The last lists' costs (none yet: counts); individual time steps keep each particle's work
+    // from its last active step (select_active).
+    if (s.physics.balance == tree::balance::work && !s.physics.individual_time_steps())
+      flecsi_lite::execute<measure_work<D>>(s.neighbours, f::work(p));
     count_imbalance = p.distribute().count_imbalance;
     flecsi_lite::execute<mark_distributed<D>>(f::smoothing_length()(p), f::position()(p), f::drift(p),
                                               f::distributed_h(p), f::distributed_position(p));
@@ -128,7 +128,8 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
   }
   if (search) {
     // A task: after the refit, and after the last readers of the old lists.
-    find_neighbours(p, s.neighbours, s.physics.list_skin);
+    if (s.physics.individual_time_steps()) find_active_neighbours(s);
+    else find_neighbours(p, s.neighbours, s.physics.list_skin);
     ++s.searches;
     if (redistribute)
       s.balance.expect(count_imbalance,

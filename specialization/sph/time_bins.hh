@@ -52,21 +52,29 @@ void start_time_bins(wo<std::int32_t> time_bin, wo<std::int64_t> step_begin, wo<
   }, "sph::start_time_bins");
 }
 
-/// The targets whose step ends at tick `next`, for the pair tasks (neighbourhood::targets).
-/// Returns how many there are.
+/// The targets whose step ends at tick `next`, for the pair tasks (neighbourhood::targets), and
+/// their work for balance = work: list length times how often the particle is active (2^-bin of
+/// the span; the others keep theirs). Returns how many targets are active and their list entries.
 template<int D>
-double select_active(typename tracked_neighbourhood<D>::template accessor<flecsi_lite::rw> neighbours,
-                     std::int64_t next, ro<std::int64_t> step_end) {
+active_count select_active(typename tracked_neighbourhood<D>::template accessor<flecsi_lite::rw> neighbours,
+                           std::int64_t next, ro<std::int64_t> step_end, ro<std::int32_t> time_bin, rw<double> work) {
   auto& n = *neighbours;
+  active_count count;
   const auto pick = [&](const std::vector<std::uint32_t>& all, std::vector<std::uint32_t>& active) {
     active.clear();
-    for (const std::uint32_t a : all)
-      if (step_end(a) == next) active.push_back(a);
+    for (const std::uint32_t a : all) {
+      if (step_end(a) != next) continue;
+      active.push_back(a);
+      const double entries = static_cast<double>(n.lists.count(a));
+      work(a) = std::ldexp(entries, timeline::bins - time_bin(a));
+      count.entries += entries;
+    }
   };
   pick(n.interior, n.active_interior);
   pick(n.boundary, n.active_boundary);
   n.active_selected = true;
-  return static_cast<double>(n.active_interior.size() + n.active_boundary.size());
+  count.targets = static_cast<double>(n.active_interior.size() + n.active_boundary.size());
+  return count;
 }
 
 /// The first kick of the particles whose step starts now, the drift of every fluid particle to
@@ -168,15 +176,17 @@ double assign_bins(timeline clock, int largest, bool first, ro<particle_kind> ki
   return failed;
 }
 
-/// The smallest bin among each owned particle's neighbours within the kernel support of either
-/// (|r_ab| < 2 max(h_a, h_b), the pairs of the force sums), itself included; so the same on any
-/// list skin.
+/// The smallest bin among the neighbours of each active particle (its step ended at `now`) within
+/// the kernel support of either (|r_ab| < 2 max(h_a, h_b), the pairs of the force sums), itself
+/// included, from its list (the search's lists hold the active particles' rows only).
 template<int D>
-void find_neighbour_bins(neighbours_ro<D> neighbours, ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h,
-                         ro_with_ghosts<std::int32_t> time_bin, wo<std::int32_t> neighbour_bin) {
+void find_neighbour_bins(neighbours_ro<D> neighbours, std::int64_t now, ro_with_ghosts<vector<D>> x,
+                         ro_with_ghosts<double> h, ro_with_ghosts<std::int32_t> time_bin, ro<std::int64_t> step_end,
+                         rw<std::int32_t> neighbour_bin) {
   const neighbour_walk<D> walk(*neighbours);
   const double support2 = physics::kernel_support * physics::kernel_support;
   flecsi_lite::forall(neighbours->size(), [&](std::size_t a) {
+    if (step_end(a) != now) return;
     std::int32_t smallest = time_bin(a);
     vector<D> r;
     for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
@@ -188,28 +198,72 @@ void find_neighbour_bins(neighbours_ro<D> neighbours, ro_with_ghosts<vector<D>> 
   }, "sph::find_neighbour_bins");
 }
 
-/// The limiter (`levels` = log2 of time_step_limiter; negative: off) and the new steps: a particle
-/// whose step ended now takes at most the smallest neighbour bin + levels and starts its next
-/// step; an inactive one above that bound is woken: its step ends at the next multiple of the
-/// smaller step after now, and its first kick is shortened to the new length (v_half, u_half move
-/// by half the difference times a, du), as if it had started with that step. Returns how many
-/// particles it woke.
+/// The limiter on the active particles (`levels` = log2 of time_step_limiter; negative: off):
+/// at most the smallest neighbour bin + levels; then each starts its next step.
 template<int D>
-double limit_bins(timeline clock, int levels, ro<particle_kind> kind, ro<std::int32_t> neighbour_bin,
-                  ro<vector<D>> acceleration, ro<double> du_dt, rw<std::int32_t> time_bin,
-                  rw<std::int64_t> step_begin, rw<std::int64_t> step_end, rw<vector<D>> v_half, rw<double> u_half) {
+void limit_active_bins(std::int64_t now, int levels, ro<particle_kind> kind, ro<std::int32_t> neighbour_bin,
+                       rw<std::int32_t> time_bin, rw<std::int64_t> step_begin, rw<std::int64_t> step_end) {
+  flecsi_lite::forall(time_bin.size(), [&](std::size_t a) {
+    if (kind(a) != particle_kind::fluid || step_end(a) != now) return;
+    if (levels >= 0) time_bin(a) = std::min(time_bin(a), neighbour_bin(a) + levels);  // aligned: smaller than one
+    step_begin(a) = now;
+    step_end(a) = now + timeline::ticks_of(time_bin(a));
+  }, "sph::limit_active_bins");
+}
+
+/// For each inactive owned particle, the smallest bin among the particles that started a step
+/// at `now` (owned or ghosts: what changed bins) within 2 max(h_a, h_b) of it, as SWIFT's limiter
+/// looks from the active particles at their neighbours: from the owned ones' lists (searched
+/// this step with 2 (1 + search_margin) max(h), enough for the h the density grew), and for the
+/// ghost ones from a walk of the local tree (current positions and h: refreshed before) over
+/// them only. Active ones keep their bound (find_neighbour_bins). A minimum: the same in any order.
+template<int D>
+void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
+                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now,
+                      ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
+                      ro_with_ghosts<std::int32_t> time_bin, rw<std::int32_t> neighbour_bin) {
+  const std::size_t owned = neighbour_bin.size(), stored = local->size();
+  std::int32_t* bound = neighbour_bin.data();
+  const auto waits = [&](std::size_t b) { return b < owned && step_begin(b) != now; };
+  flecsi_lite::forall(owned, [&](std::size_t b) {
+    if (waits(b)) bound[b] = wall_bin;
+  }, "sph::find_waking_bins::start");
+  const neighbour_walk<D> walk(*neighbours);
+  const double support2 = physics::kernel_support * physics::kernel_support;
+  flecsi_lite::forall(owned, [&](std::size_t a) {
+    if (step_begin(a) != now) return;
+    vector<D> r;
+    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
+      const std::size_t b = walk.neighbour(j);
+      if (!waits(b)) continue;
+      const double h_max = std::max(h(a), h(b));
+      if (walk.separation(x(a), x(b), j, r) < support2 * h_max * h_max)
+        Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
+    }
+  }, "sph::find_waking_bins::owned");
+  std::vector<std::uint8_t> ghost_sources(stored);
+  flecsi_lite::forall(stored, [&](std::size_t a) { ghost_sources[a] = a >= owned && step_begin(a) == now; },
+                      "sph::find_waking_bins::ghosts");
+  local->for_each_neighbour_of(ghost_sources, tree::interaction::symmetric, physics::kernel_support, space,
+                               [&](std::size_t a, std::size_t b, const auto&) {
+                                 if (waits(b)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
+                               });
+}
+
+/// Wakes the inactive particles whose bin exceeds the bound of find_waking_bins + levels: the
+/// step ends at the next multiple of the smaller step after now, and the first kick is shortened
+/// to the new length (v_half, u_half move by half the difference times a, du), as if the step had
+/// started with that length. Returns how many it woke.
+template<int D>
+double wake_bins(timeline clock, int levels, ro<particle_kind> kind, ro<std::int32_t> neighbour_bin,
+                 ro<vector<D>> acceleration, ro<double> du_dt, ro<std::int64_t> step_begin, rw<std::int32_t> time_bin,
+                 rw<std::int64_t> step_end, rw<vector<D>> v_half, rw<double> u_half) {
   double woken = 0;
   flecsi_lite::forall_reduce(
     time_bin.size(),
     [&](std::size_t a, double& count) {
-      if (kind(a) != particle_kind::fluid) return;
-      const std::int32_t bound = levels < 0 ? wall_bin : std::min<std::int32_t>(wall_bin, neighbour_bin(a) + levels);
-      if (step_end(a) == clock.now) {
-        time_bin(a) = std::min(time_bin(a), bound);  // smaller bins than an aligned one are aligned
-        step_begin(a) = clock.now;
-        step_end(a) = clock.now + timeline::ticks_of(time_bin(a));
-        return;
-      }
+      if (kind(a) != particle_kind::fluid || step_begin(a) == clock.now) return;
+      const std::int32_t bound = std::min<std::int32_t>(wall_bin, neighbour_bin(a) + levels);
       if (time_bin(a) <= bound) return;
       const std::int64_t step = timeline::ticks_of(bound);
       const std::int64_t end = (clock.now / step + 1) * step;
@@ -221,7 +275,7 @@ double limit_bins(timeline clock, int levels, ro<particle_kind> kind, ro<std::in
       step_end(a) = end;
       count += 1;
     },
-    Kokkos::Sum<double>(woken), "sph::limit_bins");
+    Kokkos::Sum<double>(woken), "sph::wake_bins");
   return woken;
 }
 
@@ -237,17 +291,6 @@ double earliest_step_end(ro<particle_kind> kind, ro<std::int64_t> step_end) {
     },
     Kokkos::Min<double>(earliest), "sph::earliest_step_end");
   return std::min(earliest, static_cast<double>(timeline::span));  // the reduction's identity is huge
-}
-
-/// The work of a particle for balance = work: its list length times how often it is active (2^-bin
-/// relative to the whole span).
-template<int D>
-void measure_active_work(neighbours_ro<D> neighbours, ro<std::int32_t> time_bin, wo<double> work) {
-  const auto& lists = neighbours->lists;
-  flecsi_lite::forall(work.size(), [&](std::size_t a) {
-    const double count = a < lists.size() ? static_cast<double>(lists.count(a)) : 0.0;
-    work(a) = std::ldexp(count, timeline::bins - time_bin(a));
-  }, "sph::measure_active_work");
 }
 
 /// The largest bin max_time_step allows (timeline::bins without a bound).
@@ -280,8 +323,19 @@ void start_timeline(simulation<D>& s) {
 /// The pair tasks of this system step for the particles whose step ends at s.clock.next.
 template<int D>
 void select_active_targets(simulation<D>& s) {
-  s.active_targets = flecsi_lite::reduce<select_active<D>, flecsi_lite::reduction::sum>(
-    s.neighbours, s.clock.next, fields<D>::step_end(*s.particles));
+  using f = fields<D>;
+  auto& p = *s.particles;
+  s.active_targets = flecsi_lite::reduce<select_active<D>, active_count_sum>(s.neighbours, s.clock.next,
+                                                                             f::step_end(p), f::time_bin(p), f::work(p));
+}
+
+/// Searches the neighbours of the particles whose step ends at s.clock.next (the others' rows
+/// stay empty).
+template<int D>
+void find_active_neighbours(simulation<D>& s) {
+  auto& p = *s.particles;
+  flecsi_lite::execute<search_active_neighbours<D>>(p.local_tree_object(), s.neighbours, p.settings().support,
+                                                    p.space(), s.clock.next, fields<D>::step_end(p));
 }
 
 template<int D>
@@ -335,13 +389,23 @@ void choose_time_bins(simulation<D>& s, bool advance) {
       << " or acceleration_factor = " << s.physics.acceleration_factor;
     throw std::runtime_error(m.str());
   }
-  flecsi_lite::execute<find_neighbour_bins<D>>(s.neighbours, f::position()(p), f::smoothing_length()(p),
-                                               f::time_bin(p), f::neighbour_bin(p));
-  s.woken += flecsi_lite::reduce<limit_bins<D>, flecsi_lite::reduction::sum>(
-               s.clock, limiter_levels(s.physics), f::kind(p), f::neighbour_bin(p), f::acceleration(p),
-               f::internal_energy_rate(p), f::time_bin(p), f::step_begin(p), f::step_end(p), f::velocity_half(p),
-               f::internal_energy_half(p))
-               .get();
+  const int levels = limiter_levels(s.physics);
+  if (levels >= 0)
+    flecsi_lite::execute<find_neighbour_bins<D>>(s.neighbours, s.clock.now, f::position()(p),
+                                                 f::smoothing_length()(p), f::time_bin(p), f::step_end(p),
+                                                 f::neighbour_bin(p));
+  flecsi_lite::execute<limit_active_bins<D>>(s.clock.now, levels, f::kind(p), f::neighbour_bin(p), f::time_bin(p),
+                                             f::step_begin(p), f::step_end(p));
+  if (levels >= 0) {
+    p.refresh_local_tree();  // h as the density left it, ghosts' too
+    flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now,
+                                              f::position()(p), f::smoothing_length()(p), f::step_begin(p),
+                                              f::time_bin(p), f::neighbour_bin(p));
+    s.woken += flecsi_lite::reduce<wake_bins<D>, flecsi_lite::reduction::sum>(
+                 s.clock, levels, f::kind(p), f::neighbour_bin(p), f::acceleration(p), f::internal_energy_rate(p),
+                 f::step_begin(p), f::time_bin(p), f::step_end(p), f::velocity_half(p), f::internal_energy_half(p))
+                 .get();
+  }
   s.clock.next = static_cast<std::int64_t>(
     flecsi_lite::reduce<earliest_step_end<D>, flecsi_lite::reduction::min>(f::kind(p), f::step_end(p)).get());
   s.dt = s.clock.duration(s.clock.next - s.clock.now);

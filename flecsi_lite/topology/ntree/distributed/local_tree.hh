@@ -70,7 +70,8 @@ public:
   std::size_t bytes() const {
     const std::size_t per_particle = 2 * sizeof(std::size_t) + sizeof(std::uint8_t) + sizeof(key_type) +
                                      sizeof(std::uint64_t) + sizeof(point<D>) + 2 * sizeof(double);
-    return sorted_to_storage_.capacity() * per_particle + tree_.bytes() + walk_.bytes();
+    return sorted_to_storage_.capacity() * per_particle + tree_.bytes() + walk_.bytes() + target_mask_.capacity() +
+           selected_walk_.bytes() + source_walk_.bytes();
   }
   /// Sorted copies of the particle data the tree was built from.
   const std::vector<key_type>& keys() const { return keys_; }
@@ -91,6 +92,36 @@ public:
     layout.rows = owned_;
     layout.shifts = shifts;
     walk_for(kind, support, groups).find_neighbours(tree_, space, out, layout);
+  }
+
+  /// The lists of the owned targets with storage_targets[a] != 0 only (one byte per owned
+  /// particle; the other rows come out empty), as find_neighbours makes them. The walk skips the
+  /// groups without a target, so its cost follows the number of targets (individual time steps
+  /// search their active particles only).
+  void find_neighbours_of(const std::vector<std::uint8_t>& storage_targets, interaction kind, double support,
+                          const domain<D>& space, neighbour_lists& out, const group_options& groups = {},
+                          shift_storage shifts = shift_storage::separate) {
+    list_layout layout;
+    layout.rename = size() > owned_ ? sorted_to_storage_.data() : nullptr;
+    layout.rows = owned_;
+    layout.shifts = shifts;
+    mark_targets(storage_targets, owned_);
+    walk_of(selected_walk_, kind, support, groups).find_neighbours(tree_, space, out, layout);
+  }
+
+  /// Calls apply(a, b, shift) with storage indices for every target a, owned or ghost, with
+  /// storage_targets[a] != 0 (one byte per stored particle), and each neighbour b, as
+  /// for_each_neighbour does: a pass from a few particles to everything near them (the time-step
+  /// limiter's wake-up of the particles near active ones, whichever rank owns those).
+  template<class F>
+  void for_each_neighbour_of(const std::vector<std::uint8_t>& storage_targets, interaction kind, double support,
+                             const domain<D>& space, F&& apply, const group_options& groups = {}) {
+    mark_targets(storage_targets, size());
+    const std::size_t* map = sorted_to_storage_.data();
+    walk_of(source_walk_, kind, support, groups)
+      .for_each_neighbour(tree_, space, [&apply, map](std::size_t a, std::size_t b, const point<D>& shift) {
+        apply(map[a], map[b], shift);
+      });
   }
 
   /// Calls apply(a, b, shift) with storage indices for every owned target a and each neighbour
@@ -123,6 +154,32 @@ private:
     }, "ntree::local_tree::gather");
   }
 
+  // target_mask_ in sorted order from a mask over the first `count` storage indices.
+  void mark_targets(const std::vector<std::uint8_t>& storage_targets, std::size_t count) {
+    if (storage_targets.size() < count)
+      throw std::logic_error("ntree::local_tree: the target mask has fewer entries than the targets it selects from");
+    target_mask_.resize(size());
+    const std::size_t* from = sorted_to_storage_.data();
+    const std::uint8_t* chosen = storage_targets.data();
+    std::uint8_t* mask = target_mask_.data();
+    flecsi_lite::forall(size(), [=](std::size_t s) { mask[s] = from[s] < count && chosen[from[s]] != 0; },
+                        "ntree::local_tree::mark_targets");
+  }
+
+  // `walk` with target_mask_ as its targets, kept while the options stay the same.
+  group_walk<D>& walk_of(group_walk<D>& walk, interaction kind, double support, const group_options& groups) {
+    search_options options;
+    options.kind = kind;
+    options.support = support;
+    options.targets = target_mask_.data();
+    const auto& current = walk.options();
+    if (current.kind != kind || current.support != support || current.targets != options.targets ||
+        walk.grouping().max_group_size != groups.max_group_size ||
+        walk.grouping().max_group_mass != groups.max_group_mass)
+      walk = group_walk<D>(options, groups);
+    return walk;
+  }
+
   // The walk keeps its workspaces between searches with the same options.
   group_walk<D>& walk_for(interaction kind, double support, const group_options& groups) {
     search_options options;
@@ -146,6 +203,9 @@ private:
   std::vector<double> m_, h_;
   hashed_tree<D> tree_;
   group_walk<D> walk_;
+  // The walks over chosen targets (find_neighbours_of, for_each_neighbour_of) and their mask.
+  std::vector<std::uint8_t> target_mask_;
+  group_walk<D> selected_walk_, source_walk_;
 };
 
 } // namespace flecsi_lite::topology::ntree

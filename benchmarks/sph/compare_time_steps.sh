@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Individual against global time steps (issue 15) on the Sedov 3D blast to a fixed end time:
+#   benchmarks/sph/compare_time_steps.sh [--per-side 50] [--end-time 0.02] [--skins "0 0.1"] [--ranks 1]
+# runs apps/sedov/sedov_3d.par with time_steps = global (list_skin 0), then individual at each
+# list skin, on 1 thread per rank, one after the other, and prints per run: wall time, system
+# steps, particle updates per step (fraction of the particles), searches, shock front and energy
+# change, and the speed-up of each individual run over the global one. FLECSPH_BUILD_DIR chooses
+# the build; SEDOV_ARGS adds --set options to every run.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+build=${FLECSPH_BUILD_DIR:-$here/build}
+per_side=50 end_time=0.02 skins="0 0.1" ranks=1
+while [ $# -gt 0 ]; do
+  case $1 in
+    --per-side) per_side=$2; shift 2 ;;
+    --end-time) end_time=$2; shift 2 ;;
+    --skins) skins=$2; shift 2 ;;
+    --ranks) ranks=$2; shift 2 ;;
+    *) echo "compare_time_steps: unknown option $1" >&2; exit 2 ;;
+  esac
+done
+source "$here/scripts/mpirun-flags.sh"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+run() {  # name, then --set options
+  local name=$1; shift
+  local start end
+  start=$(date +%s.%N)
+  OMP_NUM_THREADS=1 mpirun -np "$ranks" "${FLECSPH_MPIRUN_FLAGS[@]}" "$build/apps/sedov/sedov" \
+    "$here/apps/sedov/sedov_3d.par" --set particles_per_side="$per_side" --set end_time="$end_time" \
+    --set output_file="$work/$name.h5part" --set output_every="$end_time" --set progress_every=0 \
+    --set diagnostics_every=0 --set statistics_file=none --no-timers ${SEDOV_ARGS:-} "$@" > "$work/$name.log" 2>&1
+  end=$(date +%s.%N)
+  local wall steps updates searches front energy
+  wall=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", b - a }')
+  steps=$(sed -n 's/^.*sph: \([0-9]*\) steps to.*/\1/p' "$work/$name.log")
+  searches=$(sed -n 's/.* \([0-9]*\) neighbour searches.*/\1/p' "$work/$name.log")
+  updates=$(sed -n 's/.*individual time steps: .* updates in [0-9]* steps (\([^ ]*\) per step, \([^%]*\)%.*/\1 (\2%)/p' "$work/$name.log")
+  front=$(sed -n 's/.*shock front (half height) is at r = \([^,]*\),.*/\1/p' "$work/$name.log")
+  energy=$(sed -n 's/.*shock front.*relative energy change \([^ ]*\).*/\1/p' "$work/$name.log")
+  printf "%-22s wall %8.2f s  steps %5s  searches %5s  updates/step %-18s front %.6f  energy %s\n" \
+    "$name" "$wall" "$steps" "$searches" "${updates:-all}" "$front" "$energy"
+  wall_of[$name]=$wall
+}
+declare -A wall_of
+echo "Sedov 3D ${per_side}^3 to t = $end_time, $ranks rank(s) x 1 thread; load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+run global --set time_steps=global
+for skin in $skins; do
+  run "individual_skin_$skin" --set time_steps=individual --set list_skin="$skin"
+  echo "  speed-up over global: $(awk -v g="${wall_of[global]}" -v i="${wall_of[individual_skin_$skin]}" \
+    'BEGIN { printf "%.2f", g / i }')"
+done
+echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
