@@ -1,20 +1,21 @@
 #!/usr/bin/env bash
 # Individual against global time steps (issue 15) on the Sedov 3D blast to a fixed end time:
-#   benchmarks/sph/compare_time_steps.sh [--per-side 50] [--end-time 0.02] [--skins "0 0.1"] [--ranks 1]
-# runs apps/sedov/sedov_3d.par with time_steps = global (list_skin 0), then individual at each
-# list skin, on 1 thread per rank, one after the other, and prints per run: wall time, system
-# steps, particle updates per step (fraction of the particles), searches, shock front and energy
-# change, and the speed-up of each individual run over the global one. FLECSPH_BUILD_DIR chooses
-# the build; SEDOV_ARGS adds --set options to every run.
+#   benchmarks/sph/compare_time_steps.sh [--per-side 50] [--end-time 0.02] [--ranks 1] [--balances count]
+# runs apps/sedov/sedov_3d.par with time_steps = global, then individual, for each balance (count,
+# work), on 1 thread per rank, one after the other, and prints per run: wall time, system steps,
+# particle updates per step (fraction of the particles), searches, shock front and energy change,
+# the balance over the distributions (max / mean per rank of the work and of the particles), and
+# the speed-up of individual over global steps. FLECSPH_BUILD_DIR chooses the build; SEDOV_ARGS
+# adds --set options to every run.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 build=${FLECSPH_BUILD_DIR:-$here/build}
-per_side=50 end_time=0.02 skins="0 0.1" ranks=1
+per_side=50 end_time=0.02 balances=count ranks=1
 while [ $# -gt 0 ]; do
   case $1 in
     --per-side) per_side=$2; shift 2 ;;
     --end-time) end_time=$2; shift 2 ;;
-    --skins) skins=$2; shift 2 ;;
+    --balances) balances=$2; shift 2 ;;
     --ranks) ranks=$2; shift 2 ;;
     *) echo "compare_time_steps: unknown option $1" >&2; exit 2 ;;
   esac
@@ -40,14 +41,15 @@ run() {  # name, then --set options
   energy=$(sed -n 's/.*shock front.*relative energy change \([^ ]*\).*/\1/p' "$work/$name.log")
   printf "%-22s wall %8.2f s  steps %5s  searches %5s  updates/step %-18s front %.6f  energy %s\n" \
     "$name" "$wall" "$steps" "$searches" "${updates:-all}" "$front" "$energy"
+  sed -n 's/.*sph: balance (\([^,]*\),.*max \/ mean per rank: \(.*\)/    balance \1: \2/p' "$work/$name.log"
   wall_of[$name]=$wall
 }
 declare -A wall_of
 echo "Sedov 3D ${per_side}^3 to t = $end_time, $ranks rank(s) x 1 thread; load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-run global --set time_steps=global
-for skin in $skins; do
-  run "individual_skin_$skin" --set time_steps=individual --set list_skin="$skin"
-  echo "  speed-up over global: $(awk -v g="${wall_of[global]}" -v i="${wall_of[individual_skin_$skin]}" \
-    'BEGIN { printf "%.2f", g / i }')"
+for balance in $balances; do
+  run "global_$balance" --set time_steps=global --set balance="$balance"
+  run "individual_$balance" --set time_steps=individual --set balance="$balance"
+  echo "  speed-up of individual over global steps ($balance): $(awk -v g="${wall_of[global_$balance]}" \
+    -v i="${wall_of[individual_$balance]}" 'BEGIN { printf "%.2f", g / i }')"
 done
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
