@@ -176,6 +176,19 @@ double assign_bins(timeline clock, int largest, bool first, ro<particle_kind> ki
   return failed;
 }
 
+namespace detail {
+/// Whether entry j of a's list is within the kernel support of either, |r_ab| < 2 max(h_a, h_b):
+/// the pairs of the force sums, which the limiter looks at.
+template<int D, class Positions, class Lengths>
+bool within_kernel(const neighbour_walk<D>& walk, const Positions& x, const Lengths& h, std::size_t a,
+                   std::size_t j) {
+  const std::size_t b = walk.neighbour(j);
+  const double reach = physics::kernel_support * std::max(h(a), h(b));
+  vector<D> r;
+  return walk.separation(x(a), x(b), j, r) < reach * reach;
+}
+} // namespace detail
+
 /// The smallest bin among the neighbours of each active particle (its step ended at `now`) within
 /// the kernel support of either (|r_ab| < 2 max(h_a, h_b), the pairs of the force sums), itself
 /// included, from its list (the search's lists hold the active particles' rows only).
@@ -184,16 +197,11 @@ void find_neighbour_bins(neighbours_ro<D> neighbours, std::int64_t now, ro_with_
                          ro_with_ghosts<double> h, ro_with_ghosts<std::int32_t> time_bin, ro<std::int64_t> step_end,
                          rw<std::int32_t> neighbour_bin) {
   const neighbour_walk<D> walk(*neighbours);
-  const double support2 = physics::kernel_support * physics::kernel_support;
   flecsi_lite::forall(neighbours->size(), [&](std::size_t a) {
     if (step_end(a) != now) return;
     std::int32_t smallest = time_bin(a);
-    vector<D> r;
-    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-      const std::size_t b = walk.neighbour(j);
-      const double h_max = std::max(h(a), h(b));
-      if (walk.separation(x(a), x(b), j, r) < support2 * h_max * h_max) smallest = std::min(smallest, time_bin(b));
-    }
+    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j)
+      if (detail::within_kernel(walk, x, h, a, j)) smallest = std::min(smallest, time_bin(walk.neighbour(j)));
     neighbour_bin(a) = smallest;
   }, "sph::find_neighbour_bins");
 }
@@ -229,16 +237,11 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
     if (waits(b)) bound[b] = wall_bin;
   }, "sph::find_waking_bins::start");
   const neighbour_walk<D> walk(*neighbours);
-  const double support2 = physics::kernel_support * physics::kernel_support;
   flecsi_lite::forall(owned, [&](std::size_t a) {
     if (step_begin(a) != now) return;
-    vector<D> r;
     for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
       const std::size_t b = walk.neighbour(j);
-      if (!waits(b)) continue;
-      const double h_max = std::max(h(a), h(b));
-      if (walk.separation(x(a), x(b), j, r) < support2 * h_max * h_max)
-        Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
+      if (waits(b) && detail::within_kernel(walk, x, h, a, j)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
     }
   }, "sph::find_waking_bins::owned");
   std::vector<std::uint8_t> ghost_sources(stored);
