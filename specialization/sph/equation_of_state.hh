@@ -27,6 +27,7 @@ void compute_velocity_gradients(neighbours_ro<D> neighbours_object, physics_sett
     flecsi_lite::forall(targets.size(), [&](std::size_t i) {
       const std::size_t a = targets[i];
       const double h_a = h(a);
+      const kernel_at<Kernel> kernel_a(h_a);  // 1/h and the normalisation once per target
       const double reach2 = physics::kernel_support * physics::kernel_support * h_a * h_a;
       double div = 0;
       vector<3> rotation{};
@@ -35,7 +36,7 @@ void compute_velocity_gradients(neighbours_ro<D> neighbours_object, physics_sett
         const std::size_t b = walk.neighbour(j);
         const double r2 = walk.separation(x(a), x(b), j, r);
         if (r2 >= reach2 || r2 == 0) continue;
-        const double factor = m(b) * Kernel::gradient_factor(std::sqrt(r2), h_a);  // grad W = r factor
+        const double factor = m(b) * kernel_a.gradient_factor(std::sqrt(r2));  // grad W = r factor
         vector<3> dv{}, rr{};
         for (int k = 0; k < D; ++k) {
           dv[k] = v(a)[k] - v(b)[k];
