@@ -269,6 +269,12 @@ int run(const app::run_context& context) {
   s.dynamical_time = bns::dynamical_time(s.problem.mass, s.problem.radius, s.G);
   s.omega = s.problem.kind == bns::setup::binary ? bns::kepler_omega(s.problem, s.G) : 0.0;
   s.relaxing = s.problem.relaxation_time > 0 && s.files.restart_file.empty();
+  if (s.relaxing && s.physics.individual_time_steps())
+    throw runtime::parameter_error("bns: time_steps = individual with relaxation_time = " +
+                                   std::to_string(s.problem.relaxation_time) +
+                                   ": the relaxation damps every particle's velocity in every step, which "
+                                   "individual steps do not take; relax with time_steps = global, or set "
+                                   "relaxation_time = 0");
   s.description = {{"star_mass", s.problem.mass},
                    {"star_radius", s.problem.radius},
                    {"polytropic_constant", s.K},
