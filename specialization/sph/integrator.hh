@@ -32,6 +32,26 @@ void wrap_periodic(const tree::domain<D>& space, vector<D>& x) {
   }
 }
 
+/// A wall particle's half kick: it does not move, but the impulse and work the fluid gave it grow
+/// by half * a and half * du/dt.
+template<int D>
+void accumulate_on_wall(double half, const vector<D>& acceleration, double du_dt, vector<D>& impulse, double& work) {
+  for (int k = 0; k < D; ++k) impulse[k] += half * acceleration[k];
+  work += half * du_dt;
+}
+
+/// Moves x by dt * velocity (back into the periodic box) and adds the path length to `path`.
+template<int D>
+void drift_by(double dt, const vector<D>& velocity, const tree::domain<D>& space, vector<D>& x, double& path) {
+  double speed2 = 0;
+  for (int k = 0; k < D; ++k) {
+    x[k] += dt * velocity[k];
+    speed2 += velocity[k] * velocity[k];
+  }
+  path += dt * std::sqrt(speed2);
+  wrap_periodic<D>(space, x);
+}
+
 template<int D>
 void kick_drift(double dt, tree::domain<D> space, ro<particle_kind> kind,
                 rw<vector<D>> x, rw<vector<D>> v, wo<vector<D>> v_half,
@@ -42,21 +62,14 @@ void kick_drift(double dt, tree::domain<D> space, ro<particle_kind> kind,
   flecsi_lite::forall(x.size(), [&](std::size_t a) {
     const vector<D>& acc = acceleration(a);
     if (kind(a) != particle_kind::fluid) {
-      for (int k = 0; k < D; ++k) impulse(a)[k] += half * acc[k];
-      work(a) += half * du_dt(a);
+      accumulate_on_wall<D>(half, acc, du_dt(a), impulse(a), work(a));
       v_half(a) = v(a);
       u_half(a) = u(a);
       return;
     }
     vector<D> velocity;
-    double speed2 = 0;
-    for (int k = 0; k < D; ++k) {
-      velocity[k] = v(a)[k] + half * acc[k];
-      x(a)[k] += dt * velocity[k];
-      speed2 += velocity[k] * velocity[k];
-    }
-    drift(a) += dt * std::sqrt(speed2);
-    wrap_periodic<D>(space, x(a));
+    for (int k = 0; k < D; ++k) velocity[k] = v(a)[k] + half * acc[k];
+    drift_by<D>(dt, velocity, space, x(a), drift(a));
     v_half(a) = velocity;
     for (int k = 0; k < D; ++k) v(a)[k] = velocity[k] + half * acc[k];
     u_half(a) = u(a) + half * du_dt(a);
@@ -72,8 +85,7 @@ void kick(double dt, ro<particle_kind> kind, ro<vector<D>> v_half, ro<double> u_
   flecsi_lite::forall(v.size(), [&](std::size_t a) {
     const vector<D>& acc = acceleration(a);
     if (kind(a) != particle_kind::fluid) {
-      for (int k = 0; k < D; ++k) impulse(a)[k] += half * acc[k];
-      work(a) += half * du_dt(a);
+      accumulate_on_wall<D>(half, acc, du_dt(a), impulse(a), work(a));
       v(a) = v_half(a);
       u(a) = u_half(a);
       return;

@@ -89,8 +89,7 @@ void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<
   flecsi_lite::forall(x.size(), [&](std::size_t a) {
     const vector<D>& acc = acceleration(a);
     if (kind(a) != particle_kind::fluid) {
-      for (int k = 0; k < D; ++k) impulse(a)[k] += half_dt * acc[k];
-      work(a) += half_dt * du_dt(a);
+      accumulate_on_wall<D>(half_dt, acc, du_dt(a), impulse(a), work(a));
       v_half(a) = v(a);
       u_half(a) = u(a);
       time_bin(a) = wall_bin;
@@ -103,13 +102,7 @@ void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<
       for (int k = 0; k < D; ++k) v_half(a)[k] = v(a)[k] + 0.5 * length * acc[k];
       u_half(a) = u(a) + 0.5 * length * du_dt(a);
     }
-    double speed2 = 0;
-    for (int k = 0; k < D; ++k) {
-      x(a)[k] += dt * v_half(a)[k];
-      speed2 += v_half(a)[k] * v_half(a)[k];
-    }
-    drift(a) += dt * std::sqrt(speed2);
-    wrap_periodic<D>(space, x(a));
+    drift_by<D>(dt, v_half(a), space, x(a), drift(a));
     const double since_middle = clock.duration(clock.next - step_begin(a)) - 0.5 * length;
     for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + since_middle * acc[k];
     u(a) = u_half(a) + since_middle * du_dt(a);
@@ -137,8 +130,7 @@ double kick_bins(timeline clock, ro<particle_kind> kind, ro<vector<D>> v_half, r
       if (step_end(a) != clock.next) return;
       const vector<D>& acc = acceleration(a);
       if (kind(a) != particle_kind::fluid) {
-        for (int k = 0; k < D; ++k) impulse(a)[k] += half_dt * acc[k];
-        work(a) += half_dt * du_dt(a);
+        accumulate_on_wall<D>(half_dt, acc, du_dt(a), impulse(a), work(a));
         v(a) = v_half(a);
         u(a) = u_half(a);
         return;

@@ -86,12 +86,7 @@ public:
   /// the lists in place: owned storage order is the sorted order of the owned particles.
   void find_neighbours(interaction kind, double support, const domain<D>& space, neighbour_lists& out,
                        const group_options& groups = {}, shift_storage shifts = shift_storage::separate) {
-    list_layout layout;
-    // Without ghosts the sorted order is the storage order: no renaming.
-    layout.rename = size() > owned_ ? sorted_to_storage_.data() : nullptr;
-    layout.rows = owned_;
-    layout.shifts = shifts;
-    walk_for(kind, support, groups).find_neighbours(tree_, space, out, layout);
+    walk_for(kind, support, groups).find_neighbours(tree_, space, out, owned_rows(shifts));
   }
 
   /// The lists of the owned targets with storage_targets[a] != 0 only (one byte per owned
@@ -101,12 +96,9 @@ public:
   void find_neighbours_of(const std::vector<std::uint8_t>& storage_targets, interaction kind, double support,
                           const domain<D>& space, neighbour_lists& out, const group_options& groups = {},
                           shift_storage shifts = shift_storage::separate) {
-    list_layout layout;
-    layout.rename = size() > owned_ ? sorted_to_storage_.data() : nullptr;
-    layout.rows = owned_;
-    layout.shifts = shifts;
     mark_targets(storage_targets, owned_);
-    walk_of(selected_walk_, kind, support, groups).find_neighbours(tree_, space, out, layout);
+    reuse_walk(selected_walk_, target_mask_.data(), kind, support, groups)
+      .find_neighbours(tree_, space, out, owned_rows(shifts));
   }
 
   /// Calls apply(a, b, shift) with storage indices for every target a, owned or ghost, with
@@ -118,7 +110,7 @@ public:
                              const domain<D>& space, F&& apply, const group_options& groups = {}) {
     mark_targets(storage_targets, size());
     const std::size_t* map = sorted_to_storage_.data();
-    walk_of(source_walk_, kind, support, groups)
+    reuse_walk(source_walk_, target_mask_.data(), kind, support, groups)
       .for_each_neighbour(tree_, space, [&apply, map](std::size_t a, std::size_t b, const point<D>& shift) {
         apply(map[a], map[b], shift);
       });
@@ -166,12 +158,14 @@ private:
                         "ntree::local_tree::mark_targets");
   }
 
-  // `walk` with target_mask_ as its targets, kept while the options stay the same.
-  group_walk<D>& walk_of(group_walk<D>& walk, interaction kind, double support, const group_options& groups) {
+  // `walk` with `targets` (a sorted-order mask), kept with its workspaces while the options stay
+  // the same.
+  static group_walk<D>& reuse_walk(group_walk<D>& walk, const std::uint8_t* targets, interaction kind, double support,
+                                   const group_options& groups) {
     search_options options;
     options.kind = kind;
     options.support = support;
-    options.targets = target_mask_.data();
+    options.targets = targets;
     const auto& current = walk.options();
     if (current.kind != kind || current.support != support || current.targets != options.targets ||
         walk.grouping().max_group_size != groups.max_group_size ||
@@ -179,19 +173,17 @@ private:
       walk = group_walk<D>(options, groups);
     return walk;
   }
-
-  // The walk keeps its workspaces between searches with the same options.
   group_walk<D>& walk_for(interaction kind, double support, const group_options& groups) {
-    search_options options;
-    options.kind = kind;
-    options.support = support;
-    options.targets = owned_mask_.data();
-    const auto& current = walk_.options();
-    if (current.kind != kind || current.support != support || current.targets != options.targets ||
-        walk_.grouping().max_group_size != groups.max_group_size ||
-        walk_.grouping().max_group_mass != groups.max_group_mass)
-      walk_ = group_walk<D>(options, groups);
-    return walk_;
+    return reuse_walk(walk_, owned_mask_.data(), kind, support, groups);
+  }
+
+  // Rows for the owned particles, storage indices (renamed from the sorted order when there are ghosts).
+  list_layout owned_rows(shift_storage shifts) const {
+    list_layout layout;
+    layout.rename = size() > owned_ ? sorted_to_storage_.data() : nullptr;  // without ghosts: no renaming
+    layout.rows = owned_;
+    layout.shifts = shifts;
+    return layout;
   }
 
   std::size_t owned_ = 0;
