@@ -1,11 +1,17 @@
 // Pair terms of SPH dissipation: the Monaghan & Gingold (1983) artificial viscosity Pi_ab (seed
 // eqs. 1.10-1.11) with the Balsara (1995) switch, the signal velocity of Springel (2005, eq. 13)
 // for the Courant time step, and the artificial conductivity of Price (2008, JCP 227, 10040).
+//
+// The pair functions are templates over the number type (a double, or a pack of lanes of
+// physics/simd.hh): the SIMD force loop and the scalar code share one formula.
 #pragma once
+
+#include "specialization/physics/simd.hh"
 
 #include <Kokkos_Core.hpp>
 
 #include <cmath>
+#include <type_traits>
 
 namespace flecsph::physics {
 
@@ -16,35 +22,45 @@ struct viscosity_parameters {
   double epsilon = 0.01;
 };
 
-/// What the viscosity needs to know about one particle of a pair. `balsara` is that particle's
-/// Balsara factor (1 disables the switch).
-struct viscosity_particle {
-  double rho;
-  double c;  // sound speed
-  double h;
-  double balsara = 1.0;
+/// What the viscosity needs to know about one particle of a pair (or of one per lane).
+/// `balsara` is that particle's Balsara factor (1 disables the switch).
+template<class T>
+struct basic_viscosity_particle {
+  T rho;
+  T c;  // sound speed
+  T h;
+  T balsara = 1.0;
 };
+using viscosity_particle = basic_viscosity_particle<double>;
 
 /// mu_ab = h r_ab.v_ab / (r_ab^2 + epsilon h^2), (1.11), with r_ab = r_a - r_b, v_ab = v_a - v_b.
-KOKKOS_INLINE_FUNCTION double viscosity_mu(double h, double r_dot_v, double r_squared,
-                                           double epsilon) {
+template<class T>
+KOKKOS_INLINE_FUNCTION T viscosity_mu(T h, T r_dot_v, T r_squared, double epsilon) {
   return h * r_dot_v / (r_squared + epsilon * h * h);
 }
 
-/// Pi_ab of (1.10) using the arithmetic means of h, c and rho, times the mean Balsara factor of
-/// the pair; zero for receding pairs (r_ab.v_ab >= 0). Symmetric in a and b, as momentum and
-/// energy conservation require.
+/// Pi_ab of (1.10) for an approaching pair (r_ab.v_ab < 0; the caller selects), using the
+/// arithmetic means of h, c and rho, times the mean Balsara factor of the pair. Symmetric in a
+/// and b, as momentum and energy conservation require.
+template<class T>
+KOKKOS_INLINE_FUNCTION T approaching_pair_viscosity(const viscosity_parameters& parameters, T r_dot_v,
+                                                    T r_squared, const basic_viscosity_particle<T>& a,
+                                                    const basic_viscosity_particle<T>& b) {
+  const T h = 0.5 * (a.h + b.h);
+  const T c = 0.5 * (a.c + b.c);
+  const T rho = 0.5 * (a.rho + b.rho);
+  const T mu = viscosity_mu(h, r_dot_v, r_squared, parameters.epsilon);
+  const T pi_ab = (-parameters.alpha * c * mu + parameters.beta * mu * mu) / rho;
+  return pi_ab * 0.5 * (a.balsara + b.balsara);
+}
+
+/// Pi_ab of (1.10); zero for receding pairs (r_ab.v_ab >= 0).
 KOKKOS_INLINE_FUNCTION double artificial_viscosity(const viscosity_parameters& parameters,
                                                    double r_dot_v, double r_squared,
                                                    const viscosity_particle& a,
                                                    const viscosity_particle& b) {
   if (r_dot_v >= 0.0) return 0.0;
-  const double h = 0.5 * (a.h + b.h);
-  const double c = 0.5 * (a.c + b.c);
-  const double rho = 0.5 * (a.rho + b.rho);
-  const double mu = viscosity_mu(h, r_dot_v, r_squared, parameters.epsilon);
-  const double pi_ab = (-parameters.alpha * c * mu + parameters.beta * mu * mu) / rho;
-  return pi_ab * 0.5 * (a.balsara + b.balsara);
+  return approaching_pair_viscosity(parameters, r_dot_v, r_squared, a, b);
 }
 
 /// Balsara (1995) factor f = |div v| / (|div v| + |curl v| + 1e-4 c/h), which turns the
@@ -59,10 +75,15 @@ KOKKOS_INLINE_FUNCTION double balsara_switch(double div_v, double curl_v_magnitu
 /// Signal velocity of a pair, v_sig = c_a + c_b - beta_signal w_ab with w_ab = v_ab.r_ab/|r_ab|
 /// for approaching pairs (w_ab < 0) and v_sig = c_a + c_b otherwise (Springel 2005, MNRAS 364,
 /// 1105, eq. 13, beta_signal = 3; Monaghan 1997).
-KOKKOS_INLINE_FUNCTION double signal_velocity(double c_a, double c_b, double r_dot_v, double r,
-                                              double beta_signal = 3.0) {
-  const double w = r > 0.0 ? r_dot_v / r : 0.0;
-  return c_a + c_b - (w < 0.0 ? beta_signal * w : 0.0);
+template<class T>
+KOKKOS_INLINE_FUNCTION T signal_velocity(T c_a, T c_b, T r_dot_v, T r, double beta_signal = 3.0) {
+  if constexpr (std::is_same_v<T, double>) {
+    const double w = r > 0.0 ? r_dot_v / r : 0.0;
+    return c_a + c_b - (w < 0.0 ? beta_signal * w : 0.0);
+  } else {
+    const T w = simd::select(r > 0.0, r_dot_v / r, T(0.0));
+    return c_a + c_b - simd::select(w < 0.0, beta_signal * w, T(0.0));
+  }
 }
 
 /// Courant time step of one particle, C h / max_b v_sig,ab.
@@ -73,9 +94,9 @@ KOKKOS_INLINE_FUNCTION double courant_time_step(double courant, double h,
 
 /// Signal speed of the artificial conductivity, v_sig^u = sqrt(|P_a - P_b| / rho_ab) with
 /// rho_ab the mean density (Price 2008, eq. 29).
-KOKKOS_INLINE_FUNCTION double conductivity_signal_velocity(double P_a, double P_b, double rho_a,
-                                                           double rho_b) {
-  return std::sqrt(std::fabs(P_a - P_b) / (0.5 * (rho_a + rho_b)));
+template<class T>
+KOKKOS_INLINE_FUNCTION T conductivity_signal_velocity(T P_a, T P_b, T rho_a, T rho_b) {
+  return simd::square_root(simd::absolute(P_a - P_b) / (0.5 * (rho_a + rho_b)));
 }
 
 /// Pair term of the artificial conductivity, to be multiplied by m_b and summed over b:
@@ -83,10 +104,10 @@ KOKKOS_INLINE_FUNCTION double conductivity_signal_velocity(double P_a, double P_
 /// eq. 28). dW_dr is the radial derivative r_ab.grad_a W_ab / |r_ab| (negative; averaged over
 /// h_a and h_b by the caller), so heat flows from the hotter to the colder particle and the
 /// term is antisymmetric in a and b.
-KOKKOS_INLINE_FUNCTION double artificial_conductivity(double alpha_u, double u_a, double u_b,
-                                                      double P_a, double P_b, double rho_a,
-                                                      double rho_b, double dW_dr) {
-  const double v_signal = conductivity_signal_velocity(P_a, P_b, rho_a, rho_b);
+template<class T>
+KOKKOS_INLINE_FUNCTION T artificial_conductivity(double alpha_u, T u_a, T u_b, T P_a, T P_b, T rho_a, T rho_b,
+                                                 T dW_dr) {
+  const T v_signal = conductivity_signal_velocity(P_a, P_b, rho_a, rho_b);
   return alpha_u * v_signal * (u_a - u_b) / (0.5 * (rho_a + rho_b)) * dW_dr;
 }
 

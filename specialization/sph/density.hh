@@ -18,28 +18,64 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace flecsph::sph {
 
 namespace detail {
-/// rho(h) = sum_b m_b W(r_ab, h) and its derivative sum_b m_b dW/dh over a's list.
-template<class Kernel, int D>
-void density_sums(const neighbour_walk<D>& walk, std::size_t a, double h, const vector<D>* x,
-                  const double* m, double& rho, double& drho_dh) {
+/// What the density sums need of a's list, gathered once for all the Newton iterations of h_a:
+/// |r_ab|^2 and m_b per entry in list order, padded to whole packs with entries out of reach
+/// (r^2 = inf, m = 0). One per thread, reused from target to target.
+struct gathered_pairs {
+  std::vector<double> r2, m;
+  std::size_t count = 0;  ///< list entries (the padding excluded)
+};
+
+template<int D>
+void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>* x, const double* m,
+                  gathered_pairs& out) {
+  const std::size_t first = walk.begin(a), count = walk.end(a) - first, W = physics::simd::lanes<physics::simd::pack>;
+  const std::size_t padded = (count + W - 1) / W * W;
+  if (out.r2.size() < padded) {
+    out.r2.resize(padded);
+    out.m.resize(padded);
+  }
+  vector<D> r;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t j = first + i, b = walk.neighbour(j);
+    out.r2[i] = walk.separation(x[a], x[b], j, r);
+    out.m[i] = m[b];
+  }
+  for (std::size_t i = count; i < padded; ++i) {
+    out.r2[i] = std::numeric_limits<double>::infinity();
+    out.m[i] = 0.0;
+  }
+  out.count = count;
+}
+
+/// rho(h) = sum_b m_b W(r_ab, h) and its derivative sum_b m_b dW/dh over a's gathered list, T the
+/// number type of the pair arithmetic (physics/simd.hh); the terms are added lane by lane in
+/// list order, so the sums are bitwise those of T = double on every instruction set.
+template<class Kernel, class T = physics::simd::pack>
+void density_sums(const gathered_pairs& pairs, double h, double& rho, double& drho_dh) {
+  namespace simd = physics::simd;
+  constexpr std::size_t W = simd::lanes<T>;
   const kernel_at<Kernel> kernel(h);
   const double reach2 = physics::kernel_support * physics::kernel_support * h * h;
-  const vector<D>& x_a = x[a];
   double sum = 0, derivative = 0;
-  vector<D> r;
-  for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-    const std::size_t b = walk.neighbour(j);
-    const double r2 = walk.separation(x_a, x[b], j, r);
-    if (r2 >= reach2) continue;  // outside the kernel: the term is zero
-    double w, dw_dh;
-    kernel.value_and_h_derivative(std::sqrt(r2), w, dw_dh);
-    sum += m[b] * w;
-    derivative += m[b] * dw_dh;
+  const T zero = 0.0;
+  for (std::size_t j = 0; j < pairs.count; j += W) {
+    const T r2 = simd::load<T>(pairs.r2.data() + j), m_b = simd::load<T>(pairs.m.data() + j);
+    const auto inside = !(r2 >= reach2);  // outside the kernel (or padding): the term is zero
+    T w, dw_dh;
+    kernel.value_and_h_derivative(simd::square_root(r2), w, dw_dh);
+    const T mass = simd::select(inside, m_b * w, zero), change = simd::select(inside, m_b * dw_dh, zero);
+    // A zeroed lane adds +0: a no-op, the sums start at +0 and so are never -0.
+    for (std::size_t i = 0; i < W; ++i) {
+      sum += simd::element(mass, i);
+      derivative += simd::element(change, i);
+    }
   }
   rho = sum;
   drho_dh = derivative;
@@ -87,8 +123,10 @@ double density_loop(const neighbourhood<D>& neighbours, const physics_settings& 
         const double h_start = h(a), h_limit = half_reach * h_start;
         const bool adapt = settings.adaptive_smoothing_length && kind(a) == particle_kind::fluid;
         double h_a = h_start, rho_a = 0, drho_dh = 0;
+        thread_local gathered_pairs pairs;
+        gather_pairs<D>(walk, a, xs, ms, pairs);
         for (int iteration = 1;; ++iteration) {
-          density_sums<Kernel, D>(walk, a, h_a, xs, ms, rho_a, drho_dh);
+          density_sums<Kernel>(pairs, h_a, rho_a, drho_dh);
           if (!adapt || iteration >= settings.h_iterations) break;
           const double residual = physics::smoothing_length_residual<D>(h_a, rho_a, ms[a], settings.eta);
           if (std::fabs(residual) < settings.h_tolerance) break;

@@ -34,52 +34,88 @@ struct force_fields {
   double half_G = 0;
 };
 
-/// The sums of compute_forces for particle a: dv/dt, du/dt and the largest signal velocity, in
-/// list order. Conductivity is a compile-time choice: without it, the loop has less to keep live.
-/// With GradHGravity the bracket of dv/dt has the grad-h gravity term (G/2)(z_a F_a + z_b F_b),
+/// The sums of compute_forces for particle a: dv/dt, du/dt and the largest signal velocity.
+/// Conductivity is a compile-time choice: without it, the loop has less to keep live. With
+/// GradHGravity the bracket of dv/dt has the grad-h gravity term (G/2)(z_a F_a + z_b F_b),
 /// z = zeta / Omega, as symmetric in (a, b) as the pressure term.
-template<class Kernel, bool Conductivity, bool GradHGravity, int D>
+///
+/// T is the number type of the pair arithmetic: a pack (physics/simd.hh) takes lanes() list
+/// entries at once, gathered from the fields; entries beyond the kernel, beyond the list or at
+/// r = 0 are lanes whose terms are zeroed. The terms are then added to the sums lane by lane in
+/// list order, so the sums are bitwise those of T = double (tests/specialization/sph/simd_pairs.cc)
+/// on every instruction set.
+template<class Kernel, bool Conductivity, bool GradHGravity, int D, class T = physics::simd::pack>
 void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields<D>& in,
                 const physics::viscosity_parameters& viscosity, double conductivity, vector<D>& dv_dt,
                 double& du, double& signal) {
+  namespace simd = physics::simd;
+  constexpr std::size_t W = simd::lanes<T>;
   const double support2 = physics::kernel_support * physics::kernel_support;
   const vector<D> x_a = in.x[a], v_a = in.v[a];
   const double h_a = in.h[a], rho_a = in.rho[a], c_a = in.cs[a], term_a = in.pressure_term[a];
   const kernel_at<Kernel> kernel_a(h_a);
-  const physics::viscosity_particle particle_a{rho_a, c_a, h_a, in.balsara[a]};
-  vector<D> r, sum_v{};
-  double sum_u = 0, largest = c_a;
-  for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-    const std::size_t b = walk.neighbour(j);
-    const double r2 = walk.separation(x_a, in.x[b], j, r);
-    const double h_b = in.h[b], h_max = std::max(h_a, h_b);
-    if (r2 >= support2 * h_max * h_max || r2 == 0) continue;
-    const double distance = std::sqrt(r2);
-    const double F_a = kernel_a.gradient_factor(distance);
-    const double F_b = kernel_at<Kernel>(h_b).gradient_factor(distance);
-    const double F_ab = 0.5 * (F_a + F_b);
-    const vector<D>& v_b = in.v[b];
-    double r_dot_v = 0;
-    for (int k = 0; k < D; ++k) r_dot_v += r[k] * (v_a[k] - v_b[k]);
-    const double c_b = in.cs[b];
+  const physics::basic_viscosity_particle<T> particle_a{rho_a, c_a, h_a, in.balsara[a]};
+  const T lane = simd::generate<T>([](std::size_t i) { return double(i); });
+  vector<D> sum_v{};
+  double sum_u = 0;
+  T largest = c_a;
+  const std::size_t first = walk.begin(a), end = walk.end(a);
+  for (std::size_t j0 = first; j0 < end; j0 += W) {
+    // Lane i holds entry j0 + i; past the end it repeats the last entry, masked out below.
+    std::size_t b[W], entry[W];
+    for (std::size_t i = 0; i < W; ++i) {
+      entry[i] = std::min(j0 + i, end - 1);
+      b[i] = walk.neighbour(entry[i]);
+    }
+    const auto gather = [&](const double* field) { return simd::generate<T>([&](std::size_t i) { return field[b[i]]; }); };
+    T r[D], r2 = 0.0, r_dot_v = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const T x_b = simd::generate<T>([&](std::size_t i) { return in.x[b[i]][k]; });
+      const T shift = simd::generate<T>([&](std::size_t i) { return walk.shift(entry[i])[k]; });
+      r[k] = (x_a[k] - x_b) - shift;  // neighbour_walk::separation, lane by lane
+      r2 += r[k] * r[k];
+    }
+    const T h_b = gather(in.h), h_max = simd::maximum(T(h_a), h_b);
+    const auto pair = (lane < double(end - j0)) && !(r2 >= support2 * h_max * h_max) && (r2 != 0.0);
+    if (!simd::any_lane(pair)) continue;
+    const T distance = simd::square_root(r2);
+    const T F_a = kernel_a.gradient_factor(distance);
+    const T F_b = kernel_at<Kernel, T>(h_b).gradient_factor(distance);
+    const T F_ab = 0.5 * (F_a + F_b);
+    for (int k = 0; k < D; ++k) {
+      const T v_b = simd::generate<T>([&](std::size_t i) { return in.v[b[i]][k]; });
+      r_dot_v += r[k] * (v_a[k] - v_b);
+    }
+    const T c_b = gather(in.cs), rho_b = gather(in.rho);
     // Viscosity acts on approaching pairs only (Pi_ab = 0 otherwise).
-    const double Pi = r_dot_v < 0 ? physics::artificial_viscosity(viscosity, r_dot_v, r2, particle_a,
-                                                                  {in.rho[b], c_b, h_b, in.balsara[b]})
-                                  : 0.0;
-    double bracket = (term_a * F_a + in.pressure_term[b] * F_b) + Pi * F_ab;
+    const T Pi = simd::select(r_dot_v < 0.0,
+                              physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
+                                                                     {rho_b, c_b, h_b, gather(in.balsara)}),
+                              T(0.0));
+    T bracket = (term_a * F_a + gather(in.pressure_term) * F_b) + Pi * F_ab;
     if constexpr (GradHGravity)
-      bracket += in.half_G * (in.zeta_over_omega[a] * F_a + in.zeta_over_omega[b] * F_b);
-    const double m_b = in.m[b];
-    for (int k = 0; k < D; ++k) sum_v[k] -= m_b * bracket * r[k];
-    sum_u += m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v;
+      bracket += in.half_G * (in.zeta_over_omega[a] * F_a + gather(in.zeta_over_omega) * F_b);
+    const T m_b = gather(in.m), zero = 0.0;
+    T kick[D];
+    for (int k = 0; k < D; ++k) kick[k] = simd::select(pair, m_b * bracket * r[k], zero);
+    const T work = simd::select(pair, m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v, zero);
+    T heat = zero;
     if constexpr (Conductivity)
-      sum_u += m_b * physics::artificial_conductivity(conductivity, in.u[a], in.u[b], in.P[a], in.P[b], rho_a,
-                                                      in.rho[b], F_ab * distance);
-    largest = std::max(largest, r_dot_v < 0 ? physics::signal_velocity(c_a, c_b, r_dot_v, distance) : c_a + c_b);
+      heat = simd::select(pair,
+                          m_b * physics::artificial_conductivity<T>(conductivity, in.u[a], gather(in.u), in.P[a],
+                                                                    gather(in.P), rho_a, rho_b, F_ab * distance),
+                          zero);
+    largest = simd::maximum(largest, simd::select(pair, physics::signal_velocity<T>(c_a, c_b, r_dot_v, distance), zero));
+    // A zeroed lane adds +0 (a no-op: these sums start at +0 and so are never -0).
+    for (std::size_t i = 0; i < W; ++i) {
+      for (int k = 0; k < D; ++k) sum_v[k] -= simd::element(kick[k], i);
+      sum_u += simd::element(work, i);
+      if constexpr (Conductivity) sum_u += simd::element(heat, i);
+    }
   }
   dv_dt = sum_v;
   du = sum_u;
-  signal = largest;
+  signal = simd::largest_lane(largest);
 }
 } // namespace detail
 

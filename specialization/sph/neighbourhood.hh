@@ -97,12 +97,14 @@ struct neighbour_walk {
   std::size_t begin(std::size_t a) const { return offsets[a]; }
   std::size_t end(std::size_t a) const { return offsets[a + 1]; }
   std::size_t neighbour(std::size_t j) const { return tree::packed_neighbour(entries[j]); }
+  /// The periodic image shift of entry j (zero for the particle itself).
+  const vector<D>& shift(std::size_t j) const { return shift_table[tree::packed_shift(entries[j])]; }
 
   /// r_ab = (x_a - x_b) - shift_j for entry j of a's list, and |r_ab|^2. Grouped so that the
   /// pair (b, a), seen under the opposite shift, gives exactly the negated vector and the same
   /// squared distance: pair terms are then antisymmetric to the last bit.
   double separation(const vector<D>& x_a, const vector<D>& x_b, std::size_t j, vector<D>& r) const {
-    const vector<D>& s = shift_table[tree::packed_shift(entries[j])];
+    const vector<D>& s = shift(j);
     double r2 = 0;
     for (int k = 0; k < D; ++k) {
       r[k] = (x_a[k] - x_b[k]) - s[k];

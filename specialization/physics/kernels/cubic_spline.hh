@@ -4,8 +4,7 @@
 
 #include "specialization/physics/kernels/radial_kernel.hh"
 
-#include <algorithm>
-#include <cmath>
+#include <type_traits>
 
 namespace flecsph::physics {
 
@@ -24,32 +23,41 @@ struct cubic_spline_shape {
   // a = max(2 - q, 0) and b = max(1 - q, 0) (Monaghan 1992, ARA&A 30, 543),
   //   f(q) = (a^3 - 4 b^3) / 4  and  q f'(q) = -3/4 q (a + 2b)(a - 2b),  a - 2b = min(q, a),
   // need no branch on q and no division by it.
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double value(double q) {
-    const double a = outer_part(q), b = inner_part(q);
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T value(T q) {
+    const T a = outer_part(q), b = inner_part(q);
     return 0.25 * (a * a * a - 4.0 * (b * b * b));
   }
 
   /// q f'(q): -3 q^2 + 9/4 q^3 on [0,1], -3/4 q (2-q)^2 on [1,2].
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double q_derivative(double q) {
-    const double a = outer_part(q), b = inner_part(q);
-    return -0.75 * q * (a + 2.0 * b) * std::min(q, a);
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T q_derivative(T q) {
+    const T a = outer_part(q), b = inner_part(q);
+    return -0.75 * q * (a + 2.0 * b) * simd::minimum(q, a);
   }
 
-  /// f'(q)/q: -3 + 9/4 q on [0,1], -3/4 (2-q)^2 / q on [1,2].
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double derivative_over_q(double q) {
-    if (q < 1.0) return -3.0 + 2.25 * q;
-    if (q < 2.0) return -0.75 * integer_power<2>(2.0 - q) / q;
-    return 0.0;
+  /// f'(q)/q: -3 + 9/4 q on [0,1], -3/4 (2-q)^2 / q on [1,2]; for a pack both pieces are
+  /// computed and each lane takes its own (the same bits as the branches).
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T derivative_over_q(T q) {
+    if constexpr (std::is_same_v<T, double>) {
+      if (q < 1.0) return -3.0 + 2.25 * q;
+      if (q < 2.0) return -0.75 * integer_power<2>(2.0 - q) / q;
+      return 0.0;
+    } else {
+      return simd::select(q < 1.0, -3.0 + 2.25 * q,
+                          simd::select(q < 2.0, -0.75 * integer_power<2>(2.0 - q) / q, T(0.0)));
+    }
   }
 
 private:
   // max(x, 0) as (x + |x|) / 2, exact: a form compilers do not turn back into a branch.
-  KOKKOS_INLINE_FUNCTION static double positive_part(double x) { return 0.5 * (x + std::fabs(x)); }
-  KOKKOS_INLINE_FUNCTION static double outer_part(double q) { return positive_part(2.0 - q); }
-  KOKKOS_INLINE_FUNCTION static double inner_part(double q) { return positive_part(1.0 - q); }
+  template<class T>
+  KOKKOS_INLINE_FUNCTION static T positive_part(T x) { return 0.5 * (x + simd::absolute(x)); }
+  template<class T>
+  KOKKOS_INLINE_FUNCTION static T outer_part(T q) { return positive_part(2.0 - q); }
+  template<class T>
+  KOKKOS_INLINE_FUNCTION static T inner_part(T q) { return positive_part(1.0 - q); }
 };
 
 template<int D>

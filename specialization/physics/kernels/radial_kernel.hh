@@ -2,15 +2,20 @@
 // dimensionless shape f(q); gives W, dW/dr, (1/r) dW/dr and dW/dh (Price 2012, JCP 231, 759, sec. 2).
 #pragma once
 
+#include "specialization/physics/simd.hh"
+
 #include <Kokkos_Core.hpp>
+
+#include <type_traits>
 
 namespace flecsph::physics {
 
-/// x^N for a small non-negative compile-time N (the kernels' powers of h and of (1 - q)).
-template<int N>
-KOKKOS_INLINE_FUNCTION constexpr double integer_power(double x) {
+/// x^N for a small non-negative compile-time N (the kernels' powers of h and of (1 - q)); x a
+/// double or a pack of them (simd.hh).
+template<int N, class T>
+KOKKOS_INLINE_FUNCTION constexpr T integer_power(T x) {
   static_assert(N >= 0, "integer_power needs N >= 0");
-  double result = 1.0;
+  T result = 1.0;
   for (int i = 0; i < N; ++i) result *= x;
   return result;
 }
@@ -23,15 +28,28 @@ inline constexpr double kernel_support = 2.0;
 /// For shapes whose f'(q)/q is a polynomial in q (no division): q f'(q) = q^2 (f'(q)/q).
 template<class Shape>
 struct polynomial_derivative_forms {
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double q_derivative(double q) {
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T q_derivative(T q) {
     return q * q * Shape::template derivative_over_q<D>(q);
   }
 };
 
+/// piece(s, 1 - s) for s < 1 and 0 beyond, the form of the compactly supported shapes in
+/// s = q/2: a branch for one double, a lane selection for a pack (each lane bitwise the double's
+/// value).
+template<class T, class Piece>
+KOKKOS_INLINE_FUNCTION T inside_unit_support(T s, Piece&& piece) {
+  if constexpr (std::is_same_v<T, double>) {
+    if (s >= 1.0) return 0.0;
+    return piece(s, 1.0 - s);
+  } else {
+    return simd::select(s < 1.0, piece(s, 1.0 - s), T(0.0));
+  }
+}
+
 /// The kernel in dimension D built from `Shape`, which provides, for q = r/h:
 ///   normalization<D>()       sigma_D, so that the kernel integrates to 1 over R^D;
-///   value<D>(q)              f(q), zero for q >= 2;
+///   value<D>(q)              f(q), zero for q >= 2 (q a double or a pack, simd.hh);
 ///   derivative_over_q<D>(q)  f'(q)/q, finite at q = 0 (every shape here has f'(0) = 0);
 ///   q_derivative<D>(q)       q f'(q), with no division (for dW/dh in the density loop).
 /// All functions are static: a kernel object is an empty tag, cheap to capture in a Kokkos lambda.

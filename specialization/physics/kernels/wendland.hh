@@ -20,22 +20,20 @@ struct wendland_c2_shape : polynomial_derivative_forms<wendland_c2_shape> {
     else return (21.0 / (2.0 * pi)) / 8.0;
   }
 
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double value(double q) {
-    const double s = 0.5 * q;
-    if (s >= 1.0) return 0.0;
-    const double t = 1.0 - s;
-    if constexpr (D == 1) return integer_power<3>(t) * (1.0 + 3.0 * s);
-    else return integer_power<4>(t) * (1.0 + 4.0 * s);
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T value(T q) {
+    return inside_unit_support(0.5 * q, [](T s, T t) -> T {
+      if constexpr (D == 1) return integer_power<3>(t) * (1.0 + 3.0 * s);
+      else return integer_power<4>(t) * (1.0 + 4.0 * s);
+    });
   }
 
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double derivative_over_q(double q) {
-    const double s = 0.5 * q;
-    if (s >= 1.0) return 0.0;
-    const double t = 1.0 - s;
-    if constexpr (D == 1) return 0.25 * (-12.0 * integer_power<2>(t));
-    else return 0.25 * (-20.0 * integer_power<3>(t));
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T derivative_over_q(T q) {
+    return inside_unit_support(0.5 * q, [](T, T t) -> T {
+      if constexpr (D == 1) return 0.25 * (-12.0 * integer_power<2>(t));
+      else return 0.25 * (-20.0 * integer_power<3>(t));
+    });
   }
 };
 
@@ -49,22 +47,20 @@ struct wendland_c4_shape : polynomial_derivative_forms<wendland_c4_shape> {
     else return (495.0 / (32.0 * pi)) / 8.0;
   }
 
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double value(double q) {
-    const double s = 0.5 * q;
-    if (s >= 1.0) return 0.0;
-    const double t = 1.0 - s;
-    if constexpr (D == 1) return integer_power<5>(t) * (1.0 + s * (5.0 + 8.0 * s));
-    else return integer_power<6>(t) * (1.0 + s * (6.0 + (35.0 / 3.0) * s));
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T value(T q) {
+    return inside_unit_support(0.5 * q, [](T s, T t) -> T {
+      if constexpr (D == 1) return integer_power<5>(t) * (1.0 + s * (5.0 + 8.0 * s));
+      else return integer_power<6>(t) * (1.0 + s * (6.0 + (35.0 / 3.0) * s));
+    });
   }
 
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double derivative_over_q(double q) {
-    const double s = 0.5 * q;
-    if (s >= 1.0) return 0.0;
-    const double t = 1.0 - s;
-    if constexpr (D == 1) return 0.25 * (-14.0 * integer_power<4>(t) * (1.0 + 4.0 * s));
-    else return 0.25 * (-(56.0 / 3.0) * integer_power<5>(t) * (1.0 + 5.0 * s));
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T derivative_over_q(T q) {
+    return inside_unit_support(0.5 * q, [](T s, T t) -> T {
+      if constexpr (D == 1) return 0.25 * (-14.0 * integer_power<4>(t) * (1.0 + 4.0 * s));
+      else return 0.25 * (-(56.0 / 3.0) * integer_power<5>(t) * (1.0 + 5.0 * s));
+    });
   }
 };
 
@@ -78,23 +74,21 @@ struct wendland_c6_shape : polynomial_derivative_forms<wendland_c6_shape> {
     else return (1365.0 / (64.0 * pi)) / 8.0;
   }
 
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double value(double q) {
-    const double s = 0.5 * q;
-    if (s >= 1.0) return 0.0;
-    const double t = 1.0 - s;
-    if constexpr (D == 1) return integer_power<7>(t) * (1.0 + s * (7.0 + s * (19.0 + 21.0 * s)));
-    else return integer_power<8>(t) * (1.0 + s * (8.0 + s * (25.0 + 32.0 * s)));
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T value(T q) {
+    return inside_unit_support(0.5 * q, [](T s, T t) -> T {
+      if constexpr (D == 1) return integer_power<7>(t) * (1.0 + s * (7.0 + s * (19.0 + 21.0 * s)));
+      else return integer_power<8>(t) * (1.0 + s * (8.0 + s * (25.0 + 32.0 * s)));
+    });
   }
 
-  template<int D>
-  KOKKOS_INLINE_FUNCTION static double derivative_over_q(double q) {
-    const double s = 0.5 * q;
-    if (s >= 1.0) return 0.0;
-    const double t = 1.0 - s;
-    if constexpr (D == 1)
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T derivative_over_q(T q) {
+    return inside_unit_support(0.5 * q, [](T s, T t) -> T {
+      if constexpr (D == 1)
       return 0.25 * (-6.0 * integer_power<6>(t) * (3.0 + s * (18.0 + 35.0 * s)));
-    else return 0.25 * (-22.0 * integer_power<7>(t) * (1.0 + s * (7.0 + 16.0 * s)));
+      else return 0.25 * (-22.0 * integer_power<7>(t) * (1.0 + s * (7.0 + 16.0 * s)));
+    });
   }
 };
 

@@ -1,0 +1,114 @@
+// The one portable SIMD layer of the pair loops: std::experimental::simd (Parallelism TS v2, in
+// GCC's libstdc++ since GCC 11) with as many double lanes as the build's instruction set holds
+// (2 for the x86-64 default, 4 with AVX2, 8 with AVX-512: FLECSPH_NATIVE_ARCH, docs/performance.md),
+// and one lane (plain double) where the standard library lacks it or FLECSPH_SCALAR_PAIRS is set.
+//
+// The physics is written once, as templates over the number type T (double or pack), with the
+// helpers below instead of branches: every lane computes the same IEEE operations in the same
+// order as the scalar code, so a pair term is bitwise the same whatever the lane count.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+
+#if !defined(FLECSPH_SCALAR_PAIRS) && defined(__has_include)
+#if __has_include(<experimental/simd>)
+#include <experimental/simd>
+#define FLECSPH_HAVE_STD_SIMD 1
+#endif
+#endif
+#ifndef FLECSPH_HAVE_STD_SIMD
+#define FLECSPH_HAVE_STD_SIMD 0
+#endif
+
+namespace flecsph::physics::simd {
+
+#if FLECSPH_HAVE_STD_SIMD
+namespace stdx = std::experimental;
+/// The widest pack of doubles of the build's instruction set.
+using pack = stdx::native_simd<double>;
+#else
+using pack = double;
+#endif
+
+/// Lanes of a number type: 1 for double.
+template<class T>
+inline constexpr std::size_t lanes = 1;
+#if FLECSPH_HAVE_STD_SIMD
+template<class A>
+inline constexpr std::size_t lanes<stdx::simd<double, A>> = stdx::simd<double, A>::size();
+#endif
+
+// Scalar forms: what the helpers are for one lane.
+inline double select(bool condition, double yes, double no) { return condition ? yes : no; }
+inline double maximum(double a, double b) { return std::max(a, b); }
+inline double minimum(double a, double b) { return std::min(a, b); }
+inline double element(double x, std::size_t) { return x; }
+inline bool lane_is_set(bool m, std::size_t) { return m; }
+inline bool any_lane(bool m) { return m; }
+inline double largest_lane(double x) { return x; }
+
+#if FLECSPH_HAVE_STD_SIMD
+/// yes where `condition`, no elsewhere (lane by lane; both are computed).
+template<class A>
+stdx::simd<double, A> select(const typename stdx::simd<double, A>::mask_type& condition,
+                             const stdx::simd<double, A>& yes, const stdx::simd<double, A>& no) {
+  stdx::simd<double, A> result = no;
+  stdx::where(condition, result) = yes;
+  return result;
+}
+template<class A>
+stdx::simd<double, A> maximum(const stdx::simd<double, A>& a, const stdx::simd<double, A>& b) {
+  return stdx::max(a, b);
+}
+template<class A>
+stdx::simd<double, A> minimum(const stdx::simd<double, A>& a, const stdx::simd<double, A>& b) {
+  return stdx::min(a, b);
+}
+template<class A>
+double element(const stdx::simd<double, A>& x, std::size_t i) {
+  return x[i];
+}
+template<class A>
+bool lane_is_set(const stdx::simd_mask<double, A>& m, std::size_t i) {
+  return m[i];
+}
+template<class A>
+bool any_lane(const stdx::simd_mask<double, A>& m) {
+  return stdx::any_of(m);
+}
+template<class A>
+double largest_lane(const stdx::simd<double, A>& x) {
+  return stdx::hmax(x);
+}
+#endif
+
+/// The pack whose lane i is f(i) (a gather through any index map).
+template<class T, class F>
+T generate(F&& f) {
+  if constexpr (std::is_same_v<T, double>) return f(std::size_t(0));
+  else return T([&](auto i) { return f(std::size_t(i)); });
+}
+
+/// The pack of lanes() consecutive doubles at p.
+template<class T>
+T load(const double* p) {
+  if constexpr (std::is_same_v<T, double>) return *p;
+  else return T(p, stdx::element_aligned);
+}
+
+/// |x| and sqrt(x), lane by lane (found for packs by argument-dependent lookup).
+template<class T>
+T absolute(const T& x) {
+  using std::fabs;
+  return fabs(x);
+}
+template<class T>
+T square_root(const T& x) {
+  using std::sqrt;
+  return sqrt(x);
+}
+
+} // namespace flecsph::physics::simd

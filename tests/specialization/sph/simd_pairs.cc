@@ -1,0 +1,135 @@
+// The SIMD pair loops (physics/simd.hh) against the same loops on one double lane: for every
+// particle of jittered, moving lattices in 1D, 2D and 3D, with each kernel, the force sums (with
+// and without conductivity and the grad-h gravity term) and the density sums (at h and at grown
+// and shrunk h, so that the kernel's edge falls inside the lists) are bitwise equal. The physics
+// of the single lane is checked against direct sums in forces.cc and density.cc.
+#include "sph_setup.hh"
+
+#include "specialization/sph/forces.hh"
+
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace {
+using namespace sph_test;
+namespace simd = flecsph::physics::simd;
+
+std::uint64_t bits(double x) {
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+/// Counts of the compared sums and of those that differ in any bit.
+struct comparison {
+  std::size_t sums = 0, different = 0;
+  void add(double lanes, double one_lane) {
+    ++sums;
+    different += bits(lanes) != bits(one_lane);
+  }
+};
+
+template<class Kernel, bool Conductivity, bool GradHGravity, int D>
+void compare_forces(const sph::neighbour_walk<D>& walk, std::size_t owned, const sph::detail::force_fields<D>& in,
+                    comparison& result) {
+  const flecsph::physics::viscosity_parameters viscosity{1.0, 2.0, 0.01};
+  for (std::size_t a = 0; a < owned; ++a) {
+    sph::vector<D> dv_lanes, dv_one;
+    double du_lanes, du_one, signal_lanes, signal_one;
+    sph::detail::force_sums<Kernel, Conductivity, GradHGravity, D, simd::pack>(walk, a, in, viscosity, 0.7, dv_lanes,
+                                                                              du_lanes, signal_lanes);
+    sph::detail::force_sums<Kernel, Conductivity, GradHGravity, D, double>(walk, a, in, viscosity, 0.7, dv_one, du_one,
+                                                                          signal_one);
+    for (int k = 0; k < D; ++k) result.add(dv_lanes[k], dv_one[k]);
+    result.add(du_lanes, du_one);
+    result.add(signal_lanes, signal_one);
+  }
+}
+
+template<class Kernel, int D>
+void compare_density(const sph::neighbour_walk<D>& walk, std::size_t owned, const sph::vector<D>* x, const double* m,
+                     const double* h, comparison& result) {
+  sph::detail::gathered_pairs pairs;
+  for (std::size_t a = 0; a < owned; ++a) {
+    sph::detail::gather_pairs<D>(walk, a, x, m, pairs);
+    for (double factor : {0.9, 1.0, 1.04}) {
+      double rho_lanes, drho_lanes, rho_one, drho_one;
+      sph::detail::density_sums<Kernel, simd::pack>(pairs, factor * h[a], rho_lanes, drho_lanes);
+      sph::detail::density_sums<Kernel, double>(pairs, factor * h[a], rho_one, drho_one);
+      result.add(rho_lanes, rho_one);
+      result.add(drho_lanes, drho_one);
+    }
+  }
+}
+
+template<int D, template<int> class Kernel>
+void compare_kernel(const sph::neighbour_walk<D>& walk, std::size_t owned, sph::detail::force_fields<D> in,
+                    comparison& forces, comparison& density) {
+  compare_forces<Kernel<D>, false, false, D>(walk, owned, in, forces);
+  compare_forces<Kernel<D>, true, false, D>(walk, owned, in, forces);
+  if constexpr (D == 3) {
+    in.half_G = 0.35;
+    in.zeta_over_omega = in.balsara;  // any field: the term's arithmetic is what is compared
+    compare_forces<Kernel<D>, true, true, D>(walk, owned, in, forces);
+  }
+  compare_density<Kernel<D>, D>(walk, owned, in.x, in.m, in.h, density);
+}
+
+template<int D>
+void compare_all(bool periodic) {
+  using f = sph::fields<D>;
+  sph::simulation<D> s;
+  s.physics.balsara = true;  // Balsara factors between 0 and 1, different per particle
+  s.physics.eos.ideal.gamma = 1.4;
+  load_lattice(s, {D == 3 ? 9 : (D == 2 ? 20 : 60), periodic, 1.0, 1.0, 0.3, 0.8, 0.5});
+  sph::update_neighbours(s);
+  sph::update_density(s);
+  sph::update_pressure(s);
+  sph::update_forces(s);
+  s.next_time_step.get();
+  auto& p = *s.particles;
+  const auto x = flecsi_lite::host_view(f::position()(p));
+  const auto v = flecsi_lite::host_view(f::velocity(p));
+  const auto m = flecsi_lite::host_view(f::mass()(p));
+  const auto h = flecsi_lite::host_view(f::smoothing_length()(p));
+  const auto rho = flecsi_lite::host_view(f::density(p));
+  const auto P = flecsi_lite::host_view(f::pressure(p));
+  const auto cs = flecsi_lite::host_view(f::sound_speed(p));
+  const auto term = flecsi_lite::host_view(f::pressure_term(p));
+  const auto u = flecsi_lite::host_view(f::internal_energy(p));
+  const auto balsara = flecsi_lite::host_view(f::balsara(p));
+  const sph::detail::force_fields<D> in{x.data(),  v.data(),    m.data(), h.data(),       rho.data(),
+                                        P.data(),  cs.data(),   term.data(), u.data(), balsara.data()};
+  const sph::neighbour_walk<D> walk(s.neighbours.host());
+  const std::size_t owned = p.owned_size();
+  comparison forces, density;
+  compare_kernel<D, flecsph::physics::cubic_spline>(walk, owned, in, forces, density);
+  compare_kernel<D, flecsph::physics::wendland_c2>(walk, owned, in, forces, density);
+  compare_kernel<D, flecsph::physics::wendland_c4>(walk, owned, in, forces, density);
+  compare_kernel<D, flecsph::physics::wendland_c6>(walk, owned, in, forces, density);
+  INFO("D = " << D << ", " << simd::lanes<simd::pack> << " lanes, " << owned << " particles");
+  CHECK(forces.sums > 0);
+  CHECK(density.sums > 0);
+  CHECK(forces.different == 0);
+  CHECK(density.different == 0);
+}
+} // namespace
+
+TEST_CASE("the build's pair loops run on packs of several lanes", "[sph][simd]") {
+#if FLECSPH_HAVE_STD_SIMD
+  CHECK(simd::lanes<simd::pack> >= 2);
+#else
+  WARN("no std::experimental::simd here: the pair loops run on one lane");
+#endif
+}
+
+TEST_CASE("force and density sums on packs are bitwise those on one lane", "[sph][simd]") {
+  for (bool periodic : {true, false}) {
+    compare_all<1>(periodic);
+    compare_all<2>(periodic);
+    compare_all<3>(periodic);
+  }
+}
