@@ -29,8 +29,13 @@ namespace flecsph::physics::simd {
 namespace stdx = std::experimental;
 /// The widest pack of doubles of the build's instruction set.
 using pack = stdx::native_simd<double>;
+/// The pack of at most N lanes (the native one where that is narrower).
+template<std::size_t N>
+using pack_at_most = stdx::simd<double, stdx::simd_abi::deduce_t<double, std::min(N, pack::size())>>;
 #else
 using pack = double;
+template<std::size_t>
+using pack_at_most = double;
 #endif
 
 /// Lanes of a number type: 1 for double.

@@ -24,6 +24,10 @@
 namespace flecsph::sph {
 
 namespace detail {
+/// The density sums' packs: at most 4 lanes. With AVX-512's 8 the task took 1.8x the time of 4
+/// lanes on a Xeon (Sapphire Rapids) while the force sums gained from 8 (docs/performance.md).
+using density_pack = physics::simd::pack_at_most<4>;
+
 /// What the density sums need of a's list, gathered once for all the Newton iterations of h_a:
 /// |r_ab|^2 and m_b per entry in list order, padded to whole packs with entries out of reach
 /// (r^2 = inf, m = 0). One per thread, reused from target to target.
@@ -35,7 +39,7 @@ struct gathered_pairs {
 template<int D>
 void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>* x, const double* m,
                   gathered_pairs& out) {
-  const std::size_t first = walk.begin(a), count = walk.end(a) - first, W = physics::simd::lanes<physics::simd::pack>;
+  const std::size_t first = walk.begin(a), count = walk.end(a) - first, W = physics::simd::lanes<density_pack>;
   const std::size_t padded = (count + W - 1) / W * W;
   if (out.r2.size() < padded) {
     out.r2.resize(padded);
@@ -57,7 +61,7 @@ void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>*
 /// rho(h) = sum_b m_b W(r_ab, h) and its derivative sum_b m_b dW/dh over a's gathered list, T the
 /// number type of the pair arithmetic (physics/simd.hh); the terms are added lane by lane in
 /// list order, so the sums are bitwise those of T = double on every instruction set.
-template<class Kernel, class T = physics::simd::pack>
+template<class Kernel, class T = density_pack>
 void density_sums(const gathered_pairs& pairs, double h, double& rho, double& drho_dh) {
   namespace simd = physics::simd;
   constexpr std::size_t W = simd::lanes<T>;

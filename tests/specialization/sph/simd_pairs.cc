@@ -57,7 +57,7 @@ void compare_density(const sph::neighbour_walk<D>& walk, std::size_t owned, cons
     sph::detail::gather_pairs<D>(walk, a, x, m, pairs);
     for (double factor : {0.9, 1.0, 1.04}) {
       double rho_lanes, drho_lanes, rho_one, drho_one;
-      sph::detail::density_sums<Kernel, simd::pack>(pairs, factor * h[a], rho_lanes, drho_lanes);
+      sph::detail::density_sums<Kernel, sph::detail::density_pack>(pairs, factor * h[a], rho_lanes, drho_lanes);
       sph::detail::density_sums<Kernel, double>(pairs, factor * h[a], rho_one, drho_one);
       result.add(rho_lanes, rho_one);
       result.add(drho_lanes, drho_one);
