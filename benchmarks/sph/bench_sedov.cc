@@ -15,8 +15,11 @@
 
 #include <mpi.h>
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <ctime>
+#include <fstream>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -30,10 +33,22 @@ constexpr int D = 3;
 struct bench_state : sph::simulation<D> {
   sedov::problem problem;
   long warm_up_steps = 1, timed_steps = 10;
+  double clock_ghz = 1;  ///< the clock the cycles per pair are counted at
   double start = 0, stop = 0;  ///< MPI_Wtime at the end of the warm-up and of the timed steps
   std::clock_t cpu_start = 0, cpu_stop = 0;  ///< CPU time of this process (all its threads), same
   std::uint64_t distributions_before = 0, repeated_searches_before = 0, searches_before = 0;
 };
+
+/// The clock of the cycle counts: --clock-ghz, else the first "cpu MHz" of /proc/cpuinfo (Linux:
+/// the nominal clock on these VMs), else 1 GHz (the counts are then nanoseconds).
+double clock_ghz(const std::string& option) {
+  if (std::stod(option) > 0) return std::stod(option);
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);)
+    if (line.rfind("cpu MHz", 0) == 0 && line.find(':') != std::string::npos)
+      return std::stod(line.substr(line.find(':') + 1)) / 1000.0;
+  return 1.0;
+}
 
 /// The keys of the sedov app from `path`, then `overrides`; the benchmark uses the problem and
 /// physics keys (its run control and output are its own).
@@ -137,6 +152,9 @@ void report(bench_state& s) {
   const double field_bytes = max_over_ranks(bytes.fields), list_bytes = max_over_ranks(bytes.neighbour_lists);
   const double tree_bytes = max_over_ranks(static_cast<double>(p.local().bytes()) /
                                            static_cast<double>(std::max<std::size_t>(1, p.owned_size())));
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  const double peak_kib = max_over_ranks(static_cast<double>(usage.ru_maxrss));
   if (runtime::rank() != 0) return;
   std::printf("bench_sedov: %lld^3 = %.0f particles, eta %.3g, %d rank(s) x %d thread(s), %ld timed steps after %ld\n",
               static_cast<long long>(s.problem.per_side), particles, s.physics.eta, runtime::size(),
@@ -169,6 +187,26 @@ void report(bench_state& s) {
     std::printf("    %-56s %6ld calls %9.4f s %6.1f%%\n", row.name.c_str(), row.calls,
                 row.max / static_cast<double>(s.timed_steps), 100 * share);
   }
+  // Cycles per list entry (the target itself included; the density's Newton iterations all in),
+  // at the nominal clock: the task's time per step times the cores that ran it.
+  const double cores = double(runtime::size()) * double(Kokkos::DefaultHostExecutionSpace().concurrency());
+  const auto cycles_per_entry = [&](const char* timer) {
+    for (const auto& row : rows)
+      if (row.name == timer) return row.max / double(s.timed_steps) * s.clock_ghz * 1e9 * cores / entries;
+    return 0.0;
+  };
+  std::printf("  cycles per list entry at %.2f GHz (x %.0f cores): forces %.1f, density %.1f; search and refit %.4f s "
+              "per step\n",
+              s.clock_ghz, cores, cycles_per_entry("sph::compute_forces"), cycles_per_entry("sph::compute_density"),
+              [&] {
+                double t = 0;
+                for (const auto& row : rows)
+                  if (row.name == "sph::search_neighbours" || row.name == "ntree::refit") t += row.max;
+                return t / double(s.timed_steps);
+              }());
+  std::printf("  peak resident memory %.0f MiB per rank: %.0f bytes per owned particle (the libraries' own "
+              "memory included)\n",
+              peak_kib / 1024.0, peak_kib * 1024.0 / (particles / double(runtime::size())));
   std::printf("throughput: %.4e particle-steps/s\n", particles / per_step);
 }
 } // namespace
@@ -182,6 +220,7 @@ int main(int argc, char** argv) {
     .value("eta", "ETA", "h = eta (m/rho)^(1/3): 1.42 gives 93 neighbours within 2h on the lattice", "1.42")
     .value("parameters", "FILE", "sedov parameter file whose problem and physics keys are used",
            FLECSPH_SEDOV_3D_PARAMETERS)
+    .value("clock-ghz", "GHZ", "clock of the cycles per pair (0: the cpu MHz of /proc/cpuinfo)", "0")
     .repeated("set", "KEY=VALUE", "override a problem or physics key (after --per-side and --eta)");
   runtime::runtime rt(argc, argv, options);
   if (!rt.proceed()) return rt.exit_code();
@@ -189,6 +228,7 @@ int main(int argc, char** argv) {
     bench_state s;
     s.warm_up_steps = count_option(rt.opts(), "warm-up");
     s.timed_steps = count_option(rt.opts(), "steps");
+    s.clock_ghz = clock_ghz(rt.opts().get("clock-ghz"));
     std::vector<std::string> overrides{"particles_per_side=" + rt.opts().get("per-side"),
                                        "eta=" + rt.opts().get("eta")};
     for (const auto& extra : rt.opts().all("set")) overrides.push_back(extra);
