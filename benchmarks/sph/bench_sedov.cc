@@ -42,7 +42,7 @@ struct bench_state : sph::simulation<D> {
 /// The clock of the cycle counts: --clock-ghz, else the first "cpu MHz" of /proc/cpuinfo (Linux:
 /// the nominal clock on these VMs), else 1 GHz (the counts are then nanoseconds).
 double clock_ghz(const std::string& option) {
-  if (std::stod(option) > 0) return std::stod(option);
+  if (const double given = std::stod(option); given > 0) return given;
   std::ifstream cpuinfo("/proc/cpuinfo");
   for (std::string line; std::getline(cpuinfo, line);)
     if (line.rfind("cpu MHz", 0) == 0 && line.find(':') != std::string::npos)

@@ -51,7 +51,6 @@ inline double select(bool condition, double yes, double no) { return condition ?
 inline double maximum(double a, double b) { return std::max(a, b); }
 inline double minimum(double a, double b) { return std::min(a, b); }
 inline double element(double x, std::size_t) { return x; }
-inline bool lane_is_set(bool m, std::size_t) { return m; }
 inline bool any_lane(bool m) { return m; }
 inline double largest_lane(double x) { return x; }
 
@@ -75,10 +74,6 @@ stdx::simd<double, A> minimum(const stdx::simd<double, A>& a, const stdx::simd<d
 template<class A>
 double element(const stdx::simd<double, A>& x, std::size_t i) {
   return x[i];
-}
-template<class A>
-bool lane_is_set(const stdx::simd_mask<double, A>& m, std::size_t i) {
-  return m[i];
 }
 template<class A>
 bool any_lane(const stdx::simd_mask<double, A>& m) {

@@ -11,7 +11,6 @@
 #include <Kokkos_Core.hpp>
 
 #include <cmath>
-#include <type_traits>
 
 namespace flecsph::physics {
 
@@ -77,13 +76,8 @@ KOKKOS_INLINE_FUNCTION double balsara_switch(double div_v, double curl_v_magnitu
 /// 1105, eq. 13, beta_signal = 3; Monaghan 1997).
 template<class T>
 KOKKOS_INLINE_FUNCTION T signal_velocity(T c_a, T c_b, T r_dot_v, T r, double beta_signal = 3.0) {
-  if constexpr (std::is_same_v<T, double>) {
-    const double w = r > 0.0 ? r_dot_v / r : 0.0;
-    return c_a + c_b - (w < 0.0 ? beta_signal * w : 0.0);
-  } else {
-    const T w = simd::select(r > 0.0, r_dot_v / r, T(0.0));
-    return c_a + c_b - simd::select(w < 0.0, beta_signal * w, T(0.0));
-  }
+  const T w = simd::select(r > 0.0, r_dot_v / r, T(0.0));  // r = 0: 0/0 computed, not taken
+  return c_a + c_b - simd::select(w < 0.0, beta_signal * w, T(0.0));
 }
 
 /// Courant time step of one particle, C h / max_b v_sig,ab.
