@@ -37,6 +37,8 @@ struct bench_state : sph::simulation<D> {
   double start = 0, stop = 0;  ///< MPI_Wtime at the end of the warm-up and of the timed steps
   std::clock_t cpu_start = 0, cpu_stop = 0;  ///< CPU time of this process (all its threads), same
   std::uint64_t distributions_before = 0, repeated_searches_before = 0, searches_before = 0;
+  std::uint64_t moved_particles_before = 0;
+  double moved_bytes_before = 0;
 };
 
 /// The clock of the cycle counts: --clock-ghz, else the first "cpu MHz" of /proc/cpuinfo (Linux:
@@ -113,6 +115,11 @@ double max_over_ranks(double value) {
   return value;
 }
 
+double sum_over_ranks(double value) {
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_SUM, runtime::communicator());
+  return value;
+}
+
 /// Starts the clock after the warm-up steps, stops it and ends the run after the timed ones (the
 /// run ends here, not by max_steps, so that no end-of-run diagnostics fall in the timed steps).
 void benchmark_clock(bench_state& s) {
@@ -123,6 +130,8 @@ void benchmark_clock(bench_state& s) {
     s.distributions_before = s.distributions;
     s.repeated_searches_before = s.repeated_searches;
     s.searches_before = s.searches;
+    s.moved_particles_before = s.moved_particles;
+    s.moved_bytes_before = s.moved_bytes;
     s.start = MPI_Wtime();
     s.cpu_start = std::clock();
   } else if (s.step == s.warm_up_steps + s.timed_steps) {
@@ -155,6 +164,10 @@ void report(bench_state& s) {
   struct rusage usage {};
   getrusage(RUSAGE_SELF, &usage);
   const double peak_kib = max_over_ranks(static_cast<double>(usage.ru_maxrss));
+  // Ghosts (copies of other ranks' particles) per owned particle, as the last distribution left them.
+  const double owned = static_cast<double>(p.owned_size()), ghosts = static_cast<double>(p.ghost_size());
+  const double ghosts_per_owned = sum_over_ranks(ghosts) / particles;
+  const double ghosts_per_owned_max = max_over_ranks(owned > 0 ? ghosts / owned : 0.0);
   if (runtime::rank() != 0) return;
   std::printf("bench_sedov: %lld^3 = %.0f particles, eta %.3g, %d rank(s) x %d thread(s), %ld timed steps after %ld\n",
               static_cast<long long>(s.problem.per_side), particles, s.physics.eta, runtime::size(),
@@ -177,6 +190,13 @@ void report(bench_state& s) {
               static_cast<unsigned long long>(s.repeated_searches - s.repeated_searches_before),
               static_cast<unsigned long long>(searches),
               searches ? double(s.timed_steps) / double(searches) : double(s.timed_steps));
+  const auto distributions = s.distributions - s.distributions_before;
+  const double moved = double(s.moved_particles - s.moved_particles_before), moved_bytes = s.moved_bytes - s.moved_bytes_before;
+  std::printf("  distribution (%s keys): %.4f ghosts per owned particle (%.4f on the rank with most); per "
+              "distribution of the timed steps %.0f particles moved, %.4g bytes (%.4g per particle)\n",
+              sph::key_order_names().name(s.physics.key_order).c_str(), ghosts_per_owned, ghosts_per_owned_max,
+              distributions ? moved / double(distributions) : 0.0, distributions ? moved_bytes / double(distributions) : 0.0,
+              distributions ? moved_bytes / double(distributions) / particles : 0.0);
   std::printf("  time per step by timer (largest over ranks; 'ntree::distribute <phase>' rows are parts of "
               "'ntree::distribute'):\n");
   std::vector<timers::summary_row> sorted(rows.begin(), rows.end());

@@ -73,12 +73,15 @@ public:
 
   void resize(std::size_t n) override { Kokkos::resize(view_, n); }
 
+  // The gathered values are written once: no zero-fill before them (a second pass over memory,
+  // and the first touch of its pages); the tail, filled later, starts at zero as before.
   void gather(const std::vector<std::size_t>& order, std::size_t tail) override {
-    view_type result(Kokkos::view_alloc(name()), order.size() + tail);
+    const std::size_t count = order.size();
+    view_type result(Kokkos::view_alloc(Kokkos::WithoutInitializing, name()), count + tail);
     auto source = view_;
     const std::size_t* o = order.data();
-    Kokkos::parallel_for("flecsi_lite::gather", Kokkos::RangePolicy<execution_space>(0, order.size()),
-                         KOKKOS_LAMBDA(std::size_t i) { result(i) = source(o[i]); });
+    Kokkos::parallel_for("flecsi_lite::gather", Kokkos::RangePolicy<execution_space>(0, count + tail),
+                         KOKKOS_LAMBDA(std::size_t i) { result(i) = i < count ? source(o[i]) : T{}; });
     Kokkos::fence();
     view_ = result;
   }

@@ -119,7 +119,10 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
     // from its last active step (select_active).
     if (s.physics.balance == tree::balance::work && !s.physics.individual_time_steps())
       flecsi_lite::execute<measure_work<D>>(s.neighbours, f::work(p));
-    count_imbalance = p.distribute().count_imbalance;
+    const tree::distribution_stats distributed = p.distribute();
+    count_imbalance = distributed.count_imbalance;
+    s.moved_particles += distributed.moved;
+    s.moved_bytes += double(distributed.moved) * double(distributed.bytes_per_particle);
     flecsi_lite::execute<mark_distributed<D>>(f::smoothing_length()(p), f::position()(p), f::drift(p),
                                               f::distributed_h(p), f::distributed_position(p));
     ++s.distributions;

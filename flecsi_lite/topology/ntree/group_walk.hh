@@ -78,17 +78,21 @@ public:
     const auto prepare = [&](std::size_t chunks) {
       builder_.start(rename ? layout.rows : tree.size(), chunks, out, kind);
     };
-    run(tree, space, prepare,
-        [&](std::size_t chunk, workspace& work, auto interaction_kind, auto periodic) {
-          auto& part = builder_[chunk];
-          walk_group<decltype(interaction_kind)::value, decltype(periodic)::value>(
-            tree, shifts, space.allowed_shifts(), work,
-            [&](std::size_t a, std::size_t count, const auto& neighbour, const auto& shift) {
-              part.append(rename ? rename[a] : a, count, neighbour, shift, rename, kind);
-            });
-        });
-    builder_.finish(out, kind);
+    do {  // twice when a chunk outgrew its region (neighbour_list_builder)
+      run(tree, space, prepare,
+          [&](std::size_t chunk, workspace& work, auto interaction_kind, auto periodic) {
+            auto& part = builder_[chunk];
+            walk_group<decltype(interaction_kind)::value, decltype(periodic)::value>(
+              tree, shifts, space.allowed_shifts(), work,
+              [&](std::size_t a, std::size_t count, const auto& neighbour, const auto& shift) {
+                part.append(rename ? rename[a] : a, count, neighbour, shift, rename, kind);
+              });
+          });
+    } while (!builder_.finish(out, kind));
   }
+
+  /// Searches for lists that walked twice (their lists outgrew the room of the previous ones).
+  std::size_t repeated_list_passes() const { return builder_.repeated_passes(); }
 
   /// The groups (node indices, in ascending particle order) of the last walk.
   const std::vector<std::uint32_t>& groups() const { return groups_; }

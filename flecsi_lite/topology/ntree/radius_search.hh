@@ -104,27 +104,27 @@ public:
     const std::size_t n = tree.size();
     const std::size_t chunks = chunk_count_for(n);
     const auto entries = neighbour_list_builder::entries_for({}, space.any_periodic(), n);
-    builder_.start(n, chunks, out, entries);
     const auto shifts = space.shift_table();
     const std::uint32_t allowed = space.allowed_shifts();
-    const bool periodic_domain = space.any_periodic();
     const search_options options = options_;
-    dispatch_search(options.kind, periodic_domain, [&](auto kind, auto periodic) {
-      flecsi_lite::forall(chunks, [&](std::size_t c) {
-        auto& part = builder_[c];
-        const std::size_t first = n * c / chunks;
-        const std::size_t last = n * (c + 1) / chunks;
-        for (std::size_t a = first; a < last; ++a) {
-          if (!options.is_target(a)) continue;
-          walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
-            tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a],
-            options.support, [&](std::size_t b, shift_code code) {
-              part.append(a, static_cast<std::uint32_t>(b), code, entries);
-            });
-        }
-      }, "ntree::radius_search::lists", flecsi_lite::dynamic_schedule{});
-    });
-    builder_.finish(out, entries);
+    do {  // twice when a chunk outgrew its region (neighbour_list_builder)
+      builder_.start(n, chunks, out, entries);
+      dispatch_search(options.kind, space.any_periodic(), [&](auto kind, auto periodic) {
+        flecsi_lite::forall(chunks, [&](std::size_t c) {
+          auto& part = builder_[c];
+          const std::size_t first = n * c / chunks;
+          const std::size_t last = n * (c + 1) / chunks;
+          for (std::size_t a = first; a < last; ++a) {
+            if (!options.is_target(a)) continue;
+            walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
+              tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a],
+              options.support, [&](std::size_t b, shift_code code) {
+                part.append(a, static_cast<std::uint32_t>(b), code, entries);
+              });
+          }
+        }, "ntree::radius_search::lists", flecsi_lite::dynamic_schedule{});
+      });
+    } while (!builder_.finish(out, entries));
   }
 
 private:

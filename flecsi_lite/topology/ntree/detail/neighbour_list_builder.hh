@@ -7,11 +7,9 @@
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -25,8 +23,10 @@ namespace flecsi_lite::topology::ntree {
 /// the previous search and a little more; the regions follow each other in chunk order, so after
 /// the scan the entries only move down, chunk after chunk, in place. The lists are thus held once,
 /// and a steady state allocates nothing (fresh memory costs page faults, and its release costs
-/// every thread a TLB flush). A chunk that outgrows its region continues in a buffer of its own,
-/// and that search gathers all chunks into new arrays.
+/// every thread a TLB flush). A chunk that outgrows its region goes on COUNTING only: finish()
+/// then reports that the search must run again, and start() gives every chunk a region for the
+/// counts of that pass. The first search of a run thus walks twice, but no search ever holds
+/// its lists more than once (a growing buffer per chunk and a gathered copy held them three times).
 class neighbour_list_builder {
 public:
   /// How the entries are written: plain indices, with separate shift codes, or packed.
@@ -40,7 +40,11 @@ public:
     void append(std::size_t row, std::size_t count, const Neighbour& neighbour, const Shift& shift,
                 const std::size_t* rename, entries kind) {
       if (row != row_) start_row(row);
-      if (size_ + count > capacity_) move_to_own_buffer(size_ + count, kind);
+      if (overflowed_ || size_ + count > capacity_) {  // outgrown: count only, finish() asks for another pass
+        overflowed_ = true;
+        size_ += count;
+        return;
+      }
       // Local pointers: the stores below cannot then change the chunk's own members.
       std::uint32_t* const out = neighbours_ + size_;
       const auto index = [&](std::size_t i) {
@@ -74,8 +78,7 @@ public:
       capacity_ = capacity;
       size_ = 0;
       row_ = no_row;
-      own_neighbours_.reset();
-      own_shifts_.reset();
+      overflowed_ = false;
     }
     // The count of the row just finished goes to counts_ (one write per row, not per entry).
     void start_row(std::size_t row) {
@@ -87,31 +90,13 @@ public:
     void close() {
       if (row_ != no_row) counts_[row_] = size_ - row_begin_;
     }
-    bool in_region() const { return !own_neighbours_; }
-    void move_to_own_buffer(std::size_t needed, entries kind) {
-      const std::size_t capacity = std::max({std::size_t{1024}, 2 * capacity_, needed});
-      // Uninitialized: every used entry is written by append.
-      std::unique_ptr<std::uint32_t[]> neighbours(new std::uint32_t[capacity]);
-      std::unique_ptr<shift_code[]> shifts(kind == entries::separate_shifts ? new shift_code[capacity] : nullptr);
-      if (size_ > 0) {
-        std::memcpy(neighbours.get(), neighbours_, size_ * sizeof(std::uint32_t));
-        if (shifts) std::memcpy(shifts.get(), shifts_, size_ * sizeof(shift_code));
-      }
-      own_neighbours_ = std::move(neighbours);
-      own_shifts_ = std::move(shifts);
-      neighbours_ = own_neighbours_.get();
-      shifts_ = own_shifts_.get();
-      capacity_ = capacity;
-    }
-
     std::size_t* counts_ = nullptr;  // out.offsets, which hold the counts until the scan
     std::size_t first_row_ = 0;      // row of the chunk's first entry
     std::size_t row_ = no_row, row_begin_ = 0;
     std::size_t size_ = 0, capacity_ = 0;
-    std::uint32_t* neighbours_ = nullptr;  // its region of the lists, or its own buffer
+    std::uint32_t* neighbours_ = nullptr;  // its region of the lists
     shift_code* shifts_ = nullptr;
-    std::unique_ptr<std::uint32_t[]> own_neighbours_;
-    std::unique_ptr<shift_code[]> own_shifts_;
+    bool overflowed_ = false;  // counting only since its region was full
   };
 
   /// The entries for `layout` on a domain that is periodic or not, for `particles` particles
@@ -145,47 +130,42 @@ public:
 
   chunk& operator[](std::size_t c) { return chunks_[c]; }
 
-  /// Turns the counts in out.offsets into offsets and moves the chunks' entries to their place.
-  void finish(neighbour_lists& out, entries kind) {
+  /// Turns the counts in out.offsets into offsets and moves the chunks' entries to their place;
+  /// or, when a chunk outgrew its region, returns false: the lists are then not valid, and the
+  /// caller runs the search again from start(), which sizes the regions for this pass's counts.
+  [[nodiscard]] bool finish(neighbour_lists& out, entries kind) {
     bool all_in_regions = true;
     for (std::size_t c = 0; c < chunk_count_; ++c) {
       chunks_[c].close();
       last_sizes_[c] = chunks_[c].size_;
-      all_in_regions = all_in_regions && chunks_[c].in_region();
+      all_in_regions = all_in_regions && !chunks_[c].overflowed_;
+    }
+    if (!all_in_regions) {
+      ++repeated_passes_;
+      return false;
     }
     const std::size_t rows = out.offsets.size() - 1;
     const std::size_t total =
       flecsi_lite::exclusive_scan(out.offsets.data(), rows + 1, "ntree::neighbour_lists::offsets");
     const bool with_shifts = kind == entries::separate_shifts;
-    if (all_in_regions) {
-      // Chunk c's place starts at the sum of the sizes of the chunks before it, at most where
-      // its region starts: moved in chunk order, no entry is overwritten before it moved.
-      for (std::size_t c = 0; c < chunk_count_; ++c) {
-        const chunk& part = chunks_[c];
-        if (part.size_ == 0) continue;
-        const std::size_t at = out.offsets[part.first_row_];
-        std::memmove(out.neighbours.data() + at, part.neighbours_, part.size_ * sizeof(std::uint32_t));
-        if (with_shifts) std::memmove(out.shifts.data() + at, part.shifts_, part.size_ * sizeof(shift_code));
-      }
-      out.neighbours.resize(total);
-      out.shifts.resize(with_shifts ? total : 0);
-    } else {
-      neighbour_lists gathered;
-      gathered.neighbours.resize(total);
-      gathered.shifts.resize(with_shifts ? total : 0);
-      flecsi_lite::forall(chunk_count_, [&](std::size_t c) {
-        const chunk& part = chunks_[c];
-        if (part.size_ == 0) return;
-        const std::size_t at = out.offsets[part.first_row_];
-        std::memcpy(gathered.neighbours.data() + at, part.neighbours_, part.size_ * sizeof(std::uint32_t));
-        if (with_shifts)
-          std::memcpy(gathered.shifts.data() + at, part.shifts_, part.size_ * sizeof(shift_code));
-      }, "ntree::neighbour_lists::gather");
-      out.neighbours.swap(gathered.neighbours);
-      out.shifts.swap(gathered.shifts);
+    // Chunk c's place starts at the sum of the sizes of the chunks before it, at most where its
+    // region starts: moved in chunk order, no entry is overwritten before it moved.
+    for (std::size_t c = 0; c < chunk_count_; ++c) {
+      const chunk& part = chunks_[c];
+      if (part.size_ == 0) continue;
+      const std::size_t at = out.offsets[part.first_row_];
+      std::memmove(out.neighbours.data() + at, part.neighbours_, part.size_ * sizeof(std::uint32_t));
+      if (with_shifts) std::memmove(out.shifts.data() + at, part.shifts_, part.size_ * sizeof(shift_code));
     }
+    out.neighbours.resize(total);
+    out.shifts.resize(with_shifts ? total : 0);
     for (std::size_t c = 0; c < chunk_count_; ++c) chunks_[c].start(nullptr, nullptr, nullptr, 0);
+    return true;
   }
+
+  /// Searches that ran twice because a chunk outgrew its region (the first one of a run, and
+  /// those whose lists grew beyond the regions' spare room).
+  std::size_t repeated_passes() const { return repeated_passes_; }
 
 private:
   // Room for `size` values: the arrays keep their allocation unless it is too small or more
@@ -203,6 +183,7 @@ private:
   std::vector<chunk> chunks_;
   std::vector<std::size_t> last_sizes_;
   std::size_t chunk_count_ = 0;
+  std::size_t repeated_passes_ = 0;
 };
 
 } // namespace flecsi_lite::topology::ntree

@@ -1,7 +1,8 @@
 // Tests of the list layouts of the group walk (list_layout): shift codes packed into the entries
 // carry the same neighbours and shifts as separate ones, on periodic and open domains; renamed
 // rows and entries (the local tree's storage order) are the default lists, renamed; and a
-// repeated search writes the lists in place, with little spare room.
+// repeated search writes the lists in place, with little spare room, walking twice only when
+// the lists outgrow the room of the last ones.
 #include "flecsi_lite/topology/ntree/group_walk.hh"
 #include "tests/flecsi_lite/topology/ntree/search_checks.hh"
 
@@ -100,13 +101,24 @@ TEST_CASE("repeated searches write the lists in place", "[ntree][list_layout]") 
   const auto expected = brute_force(set, space, options);
   nt::group_walk<3> walk(options);
   nt::neighbour_lists lists;
-  walk.find_neighbours(tree, space, lists);  // regions unknown: gathered into new arrays
+  walk.find_neighbours(tree, space, lists);  // regions unknown: a counting pass, then the lists
   require_equal(lists, expected);
+  REQUIRE(walk.repeated_list_passes() == 1);
   walk.find_neighbours(tree, space, lists);  // regions from the first search
   require_equal(lists, expected);
   const std::uint32_t* storage = lists.neighbours.data();
-  walk.find_neighbours(tree, space, lists);  // the steady state: the same arrays
+  walk.find_neighbours(tree, space, lists);  // the steady state: the same arrays, one pass each
   require_equal(lists, expected);
   REQUIRE(lists.neighbours.data() == storage);
+  REQUIRE(walk.repeated_list_passes() == 1);
+  REQUIRE(lists.neighbours.capacity() <= lists.total() + lists.total() / 8);
+
+  // Lists that outgrow their regions (larger h) take a second pass, and are right again.
+  auto grown = set;
+  for (double& h : grown.h) h *= 1.2;
+  const auto grown_tree = build_tree(grown, 16);
+  walk.find_neighbours(grown_tree, space, lists);
+  REQUIRE(walk.repeated_list_passes() == 2);
+  require_equal(lists, brute_force(grown, space, options));
   REQUIRE(lists.neighbours.capacity() <= lists.total() + lists.total() / 8);
 }
