@@ -149,7 +149,9 @@ void split_targets(neighbourhood<D>& n) {
 /// The groups of the searches' walk (seed Algorithm 2): 64 targets share one interaction list.
 /// With 93 neighbours (Sedov 3D, 50^3, 1 x 1) the search took 0.110 s per step with groups of 64,
 /// 0.126 s with 32 and 0.112 s with 128 (portable build), and 0.089-0.095 s with 64 or 128
-/// against 0.108-0.113 s with 32 (AVX-512): fewer tree walks for a slightly longer filter.
+/// against 0.108-0.113 s with 32 (AVX-512): fewer tree walks for a slightly longer filter. The
+/// searches of the active particles only (individual time steps) keep groups of 32: with few
+/// targets a group, larger ones took 10% longer (Sedov 3D 40^3 to t = 0.01).
 inline constexpr tree::group_options search_groups{64};
 
 namespace detail {
@@ -202,7 +204,7 @@ void search_active_neighbours(
   std::vector<std::uint8_t> active(step_end.size());
   flecsi_lite::forall(active.size(), [&](std::size_t a) { active[a] = step_end(a) == next; },
                       "sph::search_active_neighbours::mask");
-  local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, search_groups,
+  local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, {},
                             tree::shift_storage::packed);
   detail::finish_search(*local, *out, support, support, space);
 }

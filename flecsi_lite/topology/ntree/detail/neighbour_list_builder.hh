@@ -7,6 +7,7 @@
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -20,7 +21,7 @@ namespace flecsi_lite::topology::ntree {
 /// its rows; then the offsets are scanned and each chunk's entries moved to their place.
 ///
 /// Each chunk writes into its own REGION of the lists' arrays, as long as the chunk's entries of
-/// the previous search and a little more; the regions follow each other in chunk order, so after
+/// the recent searches and a little more; the regions follow each other in chunk order, so after
 /// the scan the entries only move down, chunk after chunk, in place. The lists are thus held once,
 /// and a steady state allocates nothing (fresh memory costs page faults, and its release costs
 /// every thread a TLB flush). A chunk that outgrows its region goes on COUNTING only: finish()
@@ -115,11 +116,11 @@ public:
   void start(std::size_t rows, std::size_t chunk_count, neighbour_lists& out, entries kind) {
     out.offsets.assign(rows + 1, 0);
     if (chunks_.size() < chunk_count) chunks_.resize(chunk_count);
-    if (last_sizes_.size() < chunk_count) last_sizes_.resize(chunk_count, 0);
+    if (room_.size() < chunk_count) room_.resize(chunk_count, 0);
     chunk_count_ = chunk_count;
     std::vector<std::size_t> region(chunk_count + 1, 0);
     for (std::size_t c = 0; c < chunk_count; ++c)
-      region[c + 1] = region[c] + last_sizes_[c] + last_sizes_[c] / 16 + (last_sizes_[c] ? 64 : 0);
+      region[c + 1] = region[c] + room_[c] + room_[c] / 16 + (room_[c] ? 64 : 0);
     const bool with_shifts = kind == entries::separate_shifts;
     fit(out.neighbours, region[chunk_count]);
     fit(out.shifts, with_shifts ? region[chunk_count] : 0);
@@ -137,7 +138,7 @@ public:
     bool all_in_regions = true;
     for (std::size_t c = 0; c < chunk_count_; ++c) {
       chunks_[c].close();
-      last_sizes_[c] = chunks_[c].size_;
+      room_[c] = std::max(chunks_[c].size_, room_[c] - room_[c] / 16);
       all_in_regions = all_in_regions && !chunks_[c].overflowed_;
     }
     if (!all_in_regions) {
@@ -181,7 +182,10 @@ private:
   }
 
   std::vector<chunk> chunks_;
-  std::vector<std::size_t> last_sizes_;
+  // Per chunk, the entries its region is made for: the largest of the recent searches, forgotten
+  // by 1/16 a search, so that searches of varying targets (individual time steps: a few active
+  // particles, then all) rarely walk twice.
+  std::vector<std::size_t> room_;
   std::size_t chunk_count_ = 0;
   std::size_t repeated_passes_ = 0;
 };
