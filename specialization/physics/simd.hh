@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 
 #if !defined(FLECSPH_SCALAR_PAIRS) && defined(__has_include)
 #if __has_include(<experimental/simd>)
@@ -103,8 +104,66 @@ FLECSPH_SIMD_INLINE T generate(F&& f) {
 /// The pack of lanes() consecutive doubles at p.
 template<class T>
 FLECSPH_SIMD_INLINE T load(const double* p) {
-  if constexpr (std::is_same_v<T, double>) return *p;
-  else return T(p, stdx::element_aligned);
+#if FLECSPH_HAVE_STD_SIMD
+  if constexpr (!std::is_same_v<T, double>) return T(p, stdx::element_aligned);
+  else
+#endif
+    return *p;
+}
+
+/// A sum of many terms (a target's list entries, in list order) whose bits do not depend on the
+/// lane count: term i goes to stripe i mod 4, each stripe adds its terms in order, and the total
+/// is (s0 + s1) + (s2 + s3). Four independent chains of adds instead of one (a lane-by-lane sum
+/// waits one add latency per term), and no lane is taken out of a pack: a pack of 4 lanes adds
+/// to one accumulator, of 2 to two in turn, of 8 as two halves, one lane (double) to four in
+/// turn. A masked term must be +0 or -0, which leaves a stripe unchanged (stripes start at +0).
+template<class T>
+class striped_sum {
+public:
+  static constexpr std::size_t stripes = 4;
+
+  /// The next lanes<T> terms.
+  FLECSPH_SIMD_INLINE void add(const T& terms) {
+    if constexpr (lanes<T> <= stripes) {
+      // Added to the first part, then the parts rotate (register moves, not an indexed store):
+      // after n packs, part k holds stripe (k + n) mod parts.
+      part_[0] += terms;
+      for (std::size_t p = 1; p < parts; ++p) std::swap(part_[p - 1], part_[p]);
+      next_ = next_ + 1 == parts ? 0 : next_ + 1;
+    } else {
+#if FLECSPH_HAVE_STD_SIMD
+      for (const auto& piece : stdx::split<accumulator>(terms)) part_[0] += piece;
+#endif
+    }
+  }
+  FLECSPH_SIMD_INLINE void subtract(const T& terms) { add(-terms); }
+
+  /// (s0 + s1) + (s2 + s3).
+  FLECSPH_SIMD_INLINE double total() const {
+    double s[stripes];
+    for (std::size_t p = 0; p < parts; ++p)
+      for (std::size_t i = 0; i < lanes<accumulator>; ++i)
+        s[p * lanes<accumulator> + i] = element(part_[(p + parts - next_) % parts], i);
+    return (s[0] + s[1]) + (s[2] + s[3]);
+  }
+
+private:
+  static_assert(stripes % lanes<T> == 0 || lanes<T> % stripes == 0, "packs of 1, 2, 4, 8, ... lanes");
+  /// T itself up to 4 lanes, else a pack of exactly 4.
+  using accumulator = std::conditional_t<(lanes<T> <= stripes), T, pack_at_most<stripes>>;
+  static constexpr std::size_t parts = stripes / lanes<accumulator>;
+  accumulator part_[parts] = {};
+  std::size_t next_ = 0;
+};
+
+/// Stores the lanes() lanes of x at p.
+template<class T>
+FLECSPH_SIMD_INLINE void store(const T& x, double* p) {
+#if FLECSPH_HAVE_STD_SIMD
+  if constexpr (!std::is_same_v<T, double>) x.copy_to(p, stdx::element_aligned);
+  else
+#endif
+    *p = x;
 }
 
 /// |x| and sqrt(x), lane by lane (found for packs by argument-dependent lookup).

@@ -29,10 +29,11 @@ namespace detail {
 using density_pack = physics::simd::pack_at_most<4>;
 
 /// What the density sums need of a's list, gathered once for all the Newton iterations of h_a:
-/// |r_ab|^2 and m_b per entry in list order, padded to whole packs with entries out of reach
-/// (r^2 = inf, m = 0). One per thread, reused from target to target.
+/// |r_ab| (one square root per entry, not one per entry and iteration) and m_b per entry in list
+/// order, padded to whole packs with entries out of reach (r = inf, m = 0). One per thread,
+/// reused from target to target.
 struct gathered_pairs {
-  std::vector<double> r2, m;
+  std::vector<double> r, m;
   std::size_t count = 0;  ///< list entries (the padding excluded)
 };
 
@@ -41,48 +42,57 @@ void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>*
                   gathered_pairs& out) {
   const std::size_t first = walk.begin(a), count = walk.end(a) - first, W = physics::simd::lanes<density_pack>;
   const std::size_t padded = (count + W - 1) / W * W;
-  if (out.r2.size() < padded) {
-    out.r2.resize(padded);
+  if (out.r.size() < padded) {
+    out.r.resize(padded);
     out.m.resize(padded);
   }
-  vector<D> r;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t j = first + i, b = walk.neighbour(j);
-    out.r2[i] = walk.separation(x[a], x[b], j, r);
-    out.m[i] = m[b];
+  // Pack by pack, each lane as neighbour_walk::separation; past the end, lanes repeat the last
+  // entry and are overwritten by the padding below.
+  namespace simd = physics::simd;
+  using T = density_pack;
+  const vector<D>& x_a = x[a];
+  const std::size_t last = first + count - 1;
+  for (std::size_t i = 0; i < count; i += W) {
+    std::size_t b[simd::lanes<T>], entry[simd::lanes<T>];
+    for (std::size_t l = 0; l < W; ++l) {
+      entry[l] = std::min(first + i + l, last);
+      b[l] = walk.neighbour(entry[l]);
+    }
+    T r[D], r2 = 0.0;
+    for (int k = 0; k < D; ++k) r[k] = x_a[k] - simd::generate<T>([&](std::size_t l) { return x[b[l]][k]; });
+    walk.subtract_shifts(entry, r);
+    for (int k = 0; k < D; ++k) r2 += r[k] * r[k];
+    simd::store(simd::square_root(r2), out.r.data() + i);
+    simd::store(simd::generate<T>([&](std::size_t l) { return m[b[l]]; }), out.m.data() + i);
   }
   for (std::size_t i = count; i < padded; ++i) {
-    out.r2[i] = std::numeric_limits<double>::infinity();
+    out.r[i] = std::numeric_limits<double>::infinity();
     out.m[i] = 0.0;
   }
   out.count = count;
 }
 
 /// rho(h) = sum_b m_b W(r_ab, h) and its derivative sum_b m_b dW/dh over a's gathered list, T the
-/// number type of the pair arithmetic (physics/simd.hh); the terms are added lane by lane in
-/// list order, so the sums are bitwise those of T = double on every instruction set.
+/// number type of the pair arithmetic (physics/simd.hh); the terms go to striped sums in list
+/// order, so the sums are bitwise those of T = double on every instruction set.
 template<class Kernel, class T = density_pack>
 void density_sums(const gathered_pairs& pairs, double h, double& rho, double& drho_dh) {
   namespace simd = physics::simd;
   constexpr std::size_t W = simd::lanes<T>;
   const kernel_at<Kernel> kernel(h);
-  const double reach2 = physics::kernel_support * physics::kernel_support * h * h;
-  double sum = 0, derivative = 0;
+  const double reach = physics::kernel_support * h;
+  simd::striped_sum<T> sum, derivative;
   const T zero = 0.0;
   for (std::size_t j = 0; j < pairs.count; j += W) {
-    const T r2 = simd::load<T>(pairs.r2.data() + j), m_b = simd::load<T>(pairs.m.data() + j);
-    const auto inside = !(r2 >= reach2);  // outside the kernel (or padding): the term is zero
+    const T r = simd::load<T>(pairs.r.data() + j), m_b = simd::load<T>(pairs.m.data() + j);
+    const auto inside = !(r >= reach);  // outside the kernel (or padding): the term is zero
     T w, dw_dh;
-    kernel.value_and_h_derivative(simd::square_root(r2), w, dw_dh);
-    const T mass = simd::select(inside, m_b * w, zero), change = simd::select(inside, m_b * dw_dh, zero);
-    // A zeroed lane adds +0: a no-op, the sums start at +0 and so are never -0.
-    for (std::size_t i = 0; i < W; ++i) {
-      sum += simd::element(mass, i);
-      derivative += simd::element(change, i);
-    }
+    kernel.value_and_h_derivative(r, w, dw_dh);
+    sum.add(simd::select(inside, m_b * w, zero));
+    derivative.add(simd::select(inside, m_b * dw_dh, zero));
   }
-  rho = sum;
-  drho_dh = derivative;
+  rho = sum.total();
+  drho_dh = derivative.total();
 }
 
 /// zeta_a / Omega_a with zeta_a = (dh_a/drho_a) sum_b m_b d phi(r_ab, h_a) / d h_a (Price & Monaghan

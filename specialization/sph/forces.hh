@@ -32,7 +32,17 @@ struct force_fields {
   const double* zeta_over_omega = nullptr;
   const vector<D>* gravity_acceleration = nullptr;
   double half_G = 0;
+  /// 1/h of every particle the lists name (inverse_smoothing_lengths): once per particle, not
+  /// once per pair.
+  const double* inverse_h = nullptr;
 };
+
+/// 1/h of the first n particles (owned, then ghosts), computed once per launch of the force task.
+inline void inverse_smoothing_lengths(const double* h, std::size_t n, std::vector<double>& out) {
+  out.resize(n);
+  double* inverse = out.data();
+  flecsi_lite::forall(n, [=](std::size_t i) { inverse[i] = 1.0 / h[i]; }, "sph::compute_forces::inverse_h");
+}
 
 /// The sums of compute_forces for particle a: dv/dt, du/dt and the largest signal velocity.
 /// Conductivity is a compile-time choice: without it, the loop has less to keep live. With
@@ -41,9 +51,10 @@ struct force_fields {
 ///
 /// T is the number type of the pair arithmetic: a pack (physics/simd.hh) takes lanes() list
 /// entries at once, gathered from the fields; entries beyond the kernel, beyond the list or at
-/// r = 0 are lanes whose terms are zeroed. The terms are then added to the sums lane by lane in
+/// r = 0 are lanes whose terms are zeroed. The terms go to striped sums (simd::striped_sum) in
 /// list order, so the sums are bitwise those of T = double (tests/specialization/sph/simd_pairs.cc)
-/// on every instruction set.
+/// on every instruction set. A pair costs one square root and two divisions (1/r and the
+/// viscosity's): 1/h comes per particle, and 1/q = h/r.
 template<class Kernel, bool Conductivity, bool GradHGravity, int D, class T = physics::simd::pack>
 void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields<D>& in,
                 const physics::viscosity_parameters& viscosity, double conductivity, vector<D>& dv_dt,
@@ -53,11 +64,10 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
   const double support2 = physics::kernel_support * physics::kernel_support;
   const vector<D> x_a = in.x[a], v_a = in.v[a];
   const double h_a = in.h[a], rho_a = in.rho[a], c_a = in.cs[a], term_a = in.pressure_term[a];
-  const kernel_at<Kernel> kernel_a(h_a);
+  const kernel_at<Kernel, T> kernel_a(T(h_a), T(in.inverse_h[a]));
   const physics::basic_viscosity_particle<T> particle_a{rho_a, c_a, h_a, in.balsara[a]};
   const T lane = simd::generate<T>([](std::size_t i) { return double(i); });
-  vector<D> sum_v{};
-  double sum_u = 0;
+  simd::striped_sum<T> sum_v[D], sum_u;
   T largest = c_a;
   const std::size_t first = walk.begin(a), end = walk.end(a);
   for (std::size_t j0 = first; j0 < end; j0 += W) {
@@ -69,18 +79,21 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
     }
     const auto gather = [&](const double* field) { return simd::generate<T>([&](std::size_t i) { return field[b[i]]; }); };
     T r[D], r2 = 0.0, r_dot_v = 0.0;
-    for (int k = 0; k < D; ++k) {
-      const T x_b = simd::generate<T>([&](std::size_t i) { return in.x[b[i]][k]; });
-      const T shift = simd::generate<T>([&](std::size_t i) { return walk.shift(entry[i])[k]; });
-      r[k] = (x_a[k] - x_b) - shift;  // neighbour_walk::separation, lane by lane
-      r2 += r[k] * r[k];
-    }
+    for (int k = 0; k < D; ++k) r[k] = x_a[k] - simd::generate<T>([&](std::size_t i) { return in.x[b[i]][k]; });
+    walk.subtract_shifts(entry, r);  // neighbour_walk::separation, lane by lane
+    for (int k = 0; k < D; ++k) r2 += r[k] * r[k];
     const T h_b = gather(in.h), h_max = simd::maximum(T(h_a), h_b);
     const auto pair = (lane < double(end - j0)) && !(r2 >= support2 * h_max * h_max) && (r2 != 0.0);
-    if (!simd::any_lane(pair)) continue;
-    const T distance = simd::square_root(r2);
-    const T F_a = kernel_a.gradient_factor(distance);
-    const T F_b = kernel_at<Kernel, T>(h_b).gradient_factor(distance);
+    const T zero = 0.0;
+    if (!simd::any_lane(pair)) {
+      // Every stripe still takes its lanes (+0), so that entry j stays in stripe j mod 4.
+      for (int k = 0; k < D; ++k) sum_v[k].add(zero);
+      sum_u.add(zero);
+      continue;
+    }
+    const T distance = simd::square_root(r2), inverse_r = 1.0 / distance;
+    const T F_a = kernel_a.gradient_factor(distance, inverse_r);
+    const T F_b = kernel_at<Kernel, T>(h_b, gather(in.inverse_h)).gradient_factor(distance, inverse_r);
     const T F_ab = 0.5 * (F_a + F_b);
     for (int k = 0; k < D; ++k) {
       const T v_b = simd::generate<T>([&](std::size_t i) { return in.v[b[i]][k]; });
@@ -91,30 +104,22 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
     const T Pi = simd::select(r_dot_v < 0.0,
                               physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
                                                                      {rho_b, c_b, h_b, gather(in.balsara)}),
-                              T(0.0));
+                              zero);
     T bracket = (term_a * F_a + gather(in.pressure_term) * F_b) + Pi * F_ab;
     if constexpr (GradHGravity)
       bracket += in.half_G * (in.zeta_over_omega[a] * F_a + gather(in.zeta_over_omega) * F_b);
-    const T m_b = gather(in.m), zero = 0.0;
-    T kick[D];
-    for (int k = 0; k < D; ++k) kick[k] = simd::select(pair, m_b * bracket * r[k], zero);
-    const T work = simd::select(pair, m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v, zero);
-    T heat = zero;
+    const T m_b = gather(in.m);
+    for (int k = 0; k < D; ++k) sum_v[k].subtract(simd::select(pair, m_b * bracket * r[k], zero));
+    T work = m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v;
     if constexpr (Conductivity)
-      heat = simd::select(pair,
-                          m_b * physics::artificial_conductivity<T>(conductivity, in.u[a], gather(in.u), in.P[a],
-                                                                    gather(in.P), rho_a, rho_b, F_ab * distance),
-                          zero);
-    largest = simd::maximum(largest, simd::select(pair, physics::signal_velocity<T>(c_a, c_b, r_dot_v, distance), zero));
-    // A zeroed lane adds +0 (a no-op: these sums start at +0 and so are never -0).
-    for (std::size_t i = 0; i < W; ++i) {
-      for (int k = 0; k < D; ++k) sum_v[k] -= simd::element(kick[k], i);
-      sum_u += simd::element(work, i);
-      if constexpr (Conductivity) sum_u += simd::element(heat, i);
-    }
+      work += m_b * physics::artificial_conductivity<T>(conductivity, in.u[a], gather(in.u), in.P[a], gather(in.P),
+                                                        rho_a, rho_b, F_ab * distance);
+    sum_u.add(simd::select(pair, work, zero));
+    largest = simd::maximum(
+      largest, simd::select(pair, physics::signal_velocity_from_inverse<T>(c_a, c_b, r_dot_v, inverse_r), zero));
   }
-  dv_dt = sum_v;
-  du = sum_u;
+  for (int k = 0; k < D; ++k) dv_dt[k] = sum_v[k].total();
+  du = sum_u.total();
   signal = simd::largest_lane(largest);
 }
 } // namespace detail
@@ -124,10 +129,13 @@ namespace detail {
 /// gravity) the tree's acceleration is added, and the grad-h gravity term with in.zeta_over_omega.
 template<int D, flecsi_lite::privilege Ghost>
 double force_loop(const neighbourhood<D>& neighbours, const physics_settings& settings, double earlier,
-                  const force_fields<D>& in, ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt,
+                  force_fields<D> in, std::size_t particles, ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt,
                   wo<double> own_time_step) {
   const neighbour_walk<D> walk(neighbours);
   const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
+  thread_local std::vector<double> inverse_h;  // kept from launch to launch: no allocation per step
+  inverse_smoothing_lengths(in.h, particles, inverse_h);
+  in.inverse_h = inverse_h.data();
   double smallest = std::numeric_limits<double>::max();
   const auto loop = [&](auto kernel_type, auto with_conductivity, auto grad_h_gravity) {
     using Kernel = decltype(kernel_type);
@@ -193,7 +201,7 @@ double compute_forces(neighbours_ro<D> neighbours, physics_settings settings, do
                       wo<vector<D>> acceleration, wo<double> du_dt, wo<double> own_time_step) {
   const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
                                    P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
-  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, kind, acceleration, du_dt, own_time_step);
+  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt, own_time_step);
 }
 
 /// The same with self-gravity (Price & Monaghan 2007, sec. 3): dv_a/dt also has
@@ -216,7 +224,7 @@ double compute_forces_with_gravity(neighbours_ro<D> neighbours, physics_settings
   if (settings.gravity.grad_h) in.zeta_over_omega = zeta_over_omega.data();
   in.gravity_acceleration = gravity_acceleration.data();
   in.half_G = 0.5 * settings.gravity.constant;
-  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, kind, acceleration, du_dt, own_time_step);
+  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt, own_time_step);
 }
 
 } // namespace flecsph::sph

@@ -14,13 +14,16 @@ struct kernel_at {
   static constexpr int D = Kernel::dimension;
   using shape = typename Kernel::shape;
 
+  T h;
   T inverse_h;
   T value_norm;     ///< sigma / h^D
   T h_norm;         ///< sigma / h^(D+1)
   T gradient_norm;  ///< sigma / h^(D+2)
 
-  explicit kernel_at(T h)
-    : inverse_h(1.0 / h), value_norm(Kernel::sigma * physics::integer_power<D>(inverse_h)),
+  explicit kernel_at(T h_) : kernel_at(h_, T(1.0 / h_)) {}
+  /// From h and 1/h (the force loop's neighbours: 1/h once per particle, not once per pair).
+  kernel_at(T h_, T inverse_h_)
+    : h(h_), inverse_h(inverse_h_), value_norm(Kernel::sigma * physics::integer_power<D>(inverse_h)),
       h_norm(Kernel::sigma * physics::integer_power<D + 1>(inverse_h)),
       gradient_norm(Kernel::sigma * physics::integer_power<D + 2>(inverse_h)) {}
 
@@ -28,6 +31,12 @@ struct kernel_at {
   template<class R>
   R gradient_factor(R r) const {
     return gradient_norm * shape::template derivative_over_q<D>(R(r * inverse_h));
+  }
+
+  /// The same given also 1/r, with no division: 1/q = h (1/r).
+  template<class R>
+  R gradient_factor(R r, R inverse_r) const {
+    return gradient_norm * shape::template derivative_over_q_from<D>(R(r * inverse_h), R(h * inverse_r));
   }
 
   /// W(r, h) and dW/dh(r, h) from one evaluation of the shape (q f'(q), with no division).

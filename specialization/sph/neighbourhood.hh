@@ -7,6 +7,7 @@
 #pragma once
 
 #include "specialization/sph/fields.hh"
+#include "specialization/physics/simd.hh"
 #include "specialization/sph/tasks.hh"
 
 #include "flecsi_lite/execution.hh"
@@ -99,6 +100,19 @@ struct neighbour_walk {
   std::size_t neighbour(std::size_t j) const { return tree::packed_neighbour(entries[j]); }
   /// The periodic image shift of entry j (zero for the particle itself).
   const vector<D>& shift(std::size_t j) const { return shift_table[tree::packed_shift(entries[j])]; }
+  /// Whether entry j is a periodic image (its shift is not the zero vector).
+  bool shifted(std::size_t j) const { return tree::packed_shift(entries[j]) != tree::zero_shift<D>; }
+
+  /// Subtracts from r (packs per axis) the shifts of the list entries j[0..lanes), unless none
+  /// is an image (most entries): the table's zero shift is +0, and x - (+0) = x, so the
+  /// separations have the same bits as neighbour_walk::separation either way.
+  template<class T, std::size_t Lanes>
+  FLECSPH_SIMD_INLINE void subtract_shifts(const std::size_t (&j)[Lanes], T (&r)[D]) const {
+    bool any = false;
+    for (std::size_t i = 0; i < Lanes; ++i) any |= shifted(j[i]);
+    if (any)
+      for (int k = 0; k < D; ++k) r[k] -= physics::simd::generate<T>([&](std::size_t i) { return shift(j[i])[k]; });
+  }
 
   /// r_ab = (x_a - x_b) - shift_j for entry j of a's list, and |r_ab|^2. Grouped so that the
   /// pair (b, a), seen under the opposite shift, gives exactly the negated vector and the same
@@ -129,12 +143,14 @@ void release_spare_room(std::vector<T>& v) {
 
 /// Splits the targets of `n` into interior and boundary: a target is interior when every entry
 /// of its list is an owned particle (storage index below the number of targets, the owned count).
+/// `particles` counts the owned and ghost particles the lists may name: without ghosts (one
+/// rank) every target is interior, and the lists are not scanned.
 template<int D>
-void split_targets(neighbourhood<D>& n) {
+void split_targets(neighbourhood<D>& n, std::size_t particles) {
   const std::size_t owned = n.size();
-  std::vector<std::uint8_t> needs_ghosts(owned);
+  std::vector<std::uint8_t> needs_ghosts(particles > owned ? owned : 0);
   const neighbour_walk<D> walk(n);
-  flecsi_lite::forall(owned, [&](std::size_t a) {
+  flecsi_lite::forall(needs_ghosts.size(), [&](std::size_t a) {
     bool ghost = false;
     for (std::size_t j = walk.begin(a), end = walk.end(a); j < end && !ghost; ++j) ghost = walk.neighbour(j) >= owned;
     needs_ghosts[a] = ghost;
@@ -143,7 +159,7 @@ void split_targets(neighbourhood<D>& n) {
   n.boundary.clear();
   n.active_selected = false;
   for (std::size_t a = 0; a < owned; ++a)
-    (needs_ghosts[a] ? n.boundary : n.interior).push_back(static_cast<std::uint32_t>(a));
+    (!needs_ghosts.empty() && needs_ghosts[a] ? n.boundary : n.interior).push_back(static_cast<std::uint32_t>(a));
 }
 
 /// The groups of the searches' walk (seed Algorithm 2): 64 targets share one interaction list.
@@ -176,7 +192,7 @@ void finish_search(const tree::local_tree<D>& local, neighbourhood<D>& out, doub
     out.listed_x[a] = x[sorted[a]];
     out.listed_h[a] = h[sorted[a]];
   }, "sph::search_neighbours::listed");
-  split_targets(out);
+  split_targets(out, local.size());
 }
 } // namespace detail
 

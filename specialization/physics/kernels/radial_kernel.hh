@@ -32,6 +32,11 @@ struct polynomial_derivative_forms {
   KOKKOS_INLINE_FUNCTION static T q_derivative(T q) {
     return q * q * Shape::template derivative_over_q<D>(q);
   }
+  /// f'(q)/q given also 1/q, which a polynomial does not need.
+  template<int D, class T>
+  KOKKOS_INLINE_FUNCTION static T derivative_over_q_from(T q, T) {
+    return Shape::template derivative_over_q<D>(q);
+  }
 };
 
 /// piece(s, 1 - s) for s < 1 and 0 beyond, the form of the compactly supported shapes in
@@ -51,7 +56,9 @@ KOKKOS_INLINE_FUNCTION T inside_unit_support(T s, Piece&& piece) {
 ///   normalization<D>()       sigma_D, so that the kernel integrates to 1 over R^D;
 ///   value<D>(q)              f(q), zero for q >= 2 (q a double or a pack, simd.hh);
 ///   derivative_over_q<D>(q)  f'(q)/q, finite at q = 0 (every shape here has f'(0) = 0);
-///   q_derivative<D>(q)       q f'(q), with no division (for dW/dh in the density loop).
+///   q_derivative<D>(q)       q f'(q), with no division (for dW/dh in the density loop);
+///   derivative_over_q_from<D>(q, 1/q)  f'(q)/q with no division, given 1/q (the force loop has
+///                            1/r once per pair, and 1/q = h/r).
 /// All functions are static: a kernel object is an empty tag, cheap to capture in a Kokkos lambda.
 template<class Shape, int D>
 struct radial_kernel {

@@ -1,7 +1,8 @@
 // The SIMD pair loops (physics/simd.hh) against the same loops on one double lane: for every
 // particle of jittered, moving lattices in 1D, 2D and 3D, with each kernel, the force sums (with
 // and without conductivity and the grad-h gravity term) and the density sums (at h and at grown
-// and shrunk h, so that the kernel's edge falls inside the lists) are bitwise equal. The physics
+// and shrunk h, so that the kernel's edge falls inside the lists) are bitwise equal: the striped
+// sums (simd::striped_sum) add each list entry to the same stripe whatever the lane count. The physics
 // of the single lane is checked against direct sums in forces.cc and density.cc.
 #include "sph_setup.hh"
 
@@ -9,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -101,8 +103,11 @@ void compare_all(bool periodic) {
   const auto term = flecsi_lite::host_view(f::pressure_term(p));
   const auto u = flecsi_lite::host_view(f::internal_energy(p));
   const auto balsara = flecsi_lite::host_view(f::balsara(p));
-  const sph::detail::force_fields<D> in{x.data(),  v.data(),    m.data(), h.data(),       rho.data(),
-                                        P.data(),  cs.data(),   term.data(), u.data(), balsara.data()};
+  sph::detail::force_fields<D> in{x.data(),  v.data(),    m.data(), h.data(),       rho.data(),
+                                  P.data(),  cs.data(),   term.data(), u.data(), balsara.data()};
+  std::vector<double> inverse_h;
+  sph::detail::inverse_smoothing_lengths(h.data(), h.size(), inverse_h);
+  in.inverse_h = inverse_h.data();
   const sph::neighbour_walk<D> walk(s.neighbours.host());
   const std::size_t owned = p.owned_size();
   comparison forces, density;
@@ -132,4 +137,31 @@ TEST_CASE("force and density sums on packs are bitwise those on one lane", "[sph
     compare_all<2>(periodic);
     compare_all<3>(periodic);
   }
+}
+
+TEST_CASE("striped sums do not depend on the lane count", "[sph][simd]") {
+  // Terms of mixed signs and magnitudes, where the order of the adds shows in the bits.
+  std::vector<double> terms(8 * 13);
+  std::uint64_t state = 12345;
+  for (double& t : terms) {  // random signs, mantissas and magnitudes 1e-8 to 1e8
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    const double mantissa = double(state >> 11) * 0x1.0p-53, sign = (state >> 10) & 1 ? 1.0 : -1.0;
+    t = sign * (1 + mantissa) * std::pow(10.0, double(int(state >> 59) % 17 - 8));
+  }
+  const auto sum_on = [&](auto pack_type) {
+    using T = decltype(pack_type);
+    simd::striped_sum<T> sum;
+    for (std::size_t i = 0; i < terms.size(); i += simd::lanes<T>) sum.add(simd::load<T>(terms.data() + i));
+    return sum.total();
+  };
+  double stripe[4] = {0, 0, 0, 0};
+  for (std::size_t i = 0; i < terms.size(); ++i) stripe[i % 4] += terms[i];
+  const double expected = (stripe[0] + stripe[1]) + (stripe[2] + stripe[3]);
+  CHECK(bits(sum_on(double{})) == bits(expected));
+  CHECK(bits(sum_on(simd::pack_at_most<2>{})) == bits(expected));
+  CHECK(bits(sum_on(simd::pack_at_most<4>{})) == bits(expected));
+  CHECK(bits(sum_on(simd::pack{})) == bits(expected));
+  double in_order = 0;
+  for (double t : terms) in_order += t;
+  CHECK(bits(in_order) != bits(expected));  // the terms do tell the orders apart
 }

@@ -1,8 +1,8 @@
 // The last step of the group walk (seed Algorithm 2, APPLY_SUB_TREE): the entries of a group's
 // interaction list within reach of one target, selected without a branch per entry (whether an
 // entry is a neighbour is data the branch predictor cannot learn): eight entries at a time with
-// AVX-512 (a native build), compressed in a register; else two at a time with SSE2 where the
-// compiler targets it.
+// AVX-512 (a native build), compressed in a register; four with AVX2 (a native build on a CPU
+// without AVX-512, e.g. AMD Zen 2/3); else two at a time with SSE2 where the compiler targets it.
 #pragma once
 
 #include "flecsi_lite/topology/ntree/space.hh"
@@ -15,6 +15,8 @@
 #if defined(__AVX512F__) && defined(__AVX512VL__)
 #include <immintrin.h>
 #define FLECSI_LITE_LIST_FILTER_AVX512 1
+#elif defined(__AVX2__)
+#include <immintrin.h>
 #elif defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -48,6 +50,23 @@ std::size_t within_reach(const point<D>& x, const std::array<const double*, D>& 
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(hits + count), _mm256_maskz_compress_epi32(inside, index));
     count += static_cast<std::size_t>(__builtin_popcount(inside));
     index = _mm256_add_epi32(index, step);
+  }
+#elif defined(__AVX2__)
+  // Four entries at a time (AVX2 has no compress): each index is written, and counted when in.
+  const __m256d own_reach = _mm256_set1_pd(reach_squared);
+  for (; j + 4 <= length; j += 4) {
+    __m256d r2 = _mm256_setzero_pd();
+    for (int k = 0; k < D; ++k) {
+      const __m256d d = _mm256_sub_pd(_mm256_set1_pd(x[k]), _mm256_loadu_pd(source[k] + j));
+      r2 = _mm256_add_pd(r2, _mm256_mul_pd(d, d));
+    }
+    const __m256d limit =
+      source_reach_squared ? _mm256_max_pd(own_reach, _mm256_loadu_pd(source_reach_squared + j)) : own_reach;
+    const int inside = _mm256_movemask_pd(_mm256_cmp_pd(r2, limit, _CMP_LT_OQ));
+    for (int i = 0; i < 4; ++i) {
+      hits[count] = static_cast<std::uint32_t>(j + i);
+      count += (inside >> i) & 1;
+    }
   }
 #elif defined(__SSE2__)
   const __m128d own_reach = _mm_set1_pd(reach_squared);
