@@ -27,7 +27,8 @@ template<int D>
 struct force_fields {
   const vector<D>* x;
   const vector<D>* v;
-  const double *m, *h, *rho, *P, *cs, *pressure_term, *u, *balsara;
+  const double *m, *h, *rho, *P, *cs, *pressure_term, *u;
+  const double* balsara;  ///< null with the switch off: every factor is 1, and Pi_ab * 1 = Pi_ab
   // Self-gravity only: zeta / Omega (owned and ghosts), G a of the tree (owned) and G / 2.
   const double* zeta_over_omega = nullptr;
   const vector<D>* gravity_acceleration = nullptr;
@@ -65,7 +66,7 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
   const vector<D> x_a = in.x[a], v_a = in.v[a];
   const double h_a = in.h[a], rho_a = in.rho[a], c_a = in.cs[a], term_a = in.pressure_term[a];
   const kernel_at<Kernel, T> kernel_a(T(h_a), T(in.inverse_h[a]));
-  const physics::basic_viscosity_particle<T> particle_a{rho_a, c_a, h_a, in.balsara[a]};
+  const physics::basic_viscosity_particle<T> particle_a{rho_a, c_a, h_a, in.balsara ? in.balsara[a] : 1.0};
   const T lane = simd::generate<T>([](std::size_t i) { return double(i); });
   simd::striped_sum<T> sum_v[D], sum_u;
   T largest = c_a;
@@ -103,7 +104,7 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
     // Viscosity acts on approaching pairs only (Pi_ab = 0 otherwise).
     const T Pi = simd::select(r_dot_v < 0.0,
                               physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
-                                                                     {rho_b, c_b, h_b, gather(in.balsara)}),
+                                                                     {rho_b, c_b, h_b, in.balsara ? gather(in.balsara) : T(1.0)}),
                               zero);
     T bracket = (term_a * F_a + gather(in.pressure_term) * F_b) + Pi * F_ab;
     if constexpr (GradHGravity)
@@ -200,7 +201,8 @@ double compute_forces(neighbours_ro<D> neighbours, physics_settings settings, do
                       ro_neighbours<double, Ghost> u, ro_neighbours<double, Ghost> balsara, ro<particle_kind> kind,
                       wo<vector<D>> acceleration, wo<double> du_dt, wo<double> own_time_step) {
   const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
-                                   P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
+                                   P.data(),   cs.data(), pressure_term.data(), u.data(),
+                                   settings.balsara ? balsara.data() : nullptr};
   return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt, own_time_step);
 }
 
@@ -220,7 +222,8 @@ double compute_forces_with_gravity(neighbours_ro<D> neighbours, physics_settings
                                    ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt,
                                    wo<double> own_time_step) {
   detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
-                             P.data(),   cs.data(), pressure_term.data(), u.data(), balsara.data()};
+                             P.data(),   cs.data(), pressure_term.data(), u.data(),
+                             settings.balsara ? balsara.data() : nullptr};
   if (settings.gravity.grad_h) in.zeta_over_omega = zeta_over_omega.data();
   in.gravity_acceleration = gravity_acceleration.data();
   in.half_G = 0.5 * settings.gravity.constant;
