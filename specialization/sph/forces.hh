@@ -45,6 +45,13 @@ inline void inverse_smoothing_lengths(const double* h, std::size_t n, std::vecto
   flecsi_lite::forall(n, [=](std::size_t i) { inverse[i] = 1.0 / h[i]; }, "sph::compute_forces::inverse_h");
 }
 
+/// The buffer of inverse_smoothing_lengths, one per launching thread, shared by the interior and
+/// the boundary launches of every dimension: kept from step to step, no allocation per launch.
+inline std::vector<double>& inverse_h_buffer() {
+  thread_local std::vector<double> buffer;
+  return buffer;
+}
+
 /// The sums of compute_forces for particle a: dv/dt, du/dt and the largest signal velocity.
 /// Conductivity is a compile-time choice: without it, the loop has less to keep live. With
 /// GradHGravity the bracket of dv/dt has the grad-h gravity term (G/2)(z_a F_a + z_b F_b),
@@ -126,15 +133,16 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
 } // namespace detail
 
 namespace detail {
-/// The loop of compute_forces over one part's targets; with `in.gravity_acceleration` set (self-
-/// gravity) the tree's acceleration is added, and the grad-h gravity term with in.zeta_over_omega.
+/// The loop of compute_forces over one part's targets, whose lists name the first `particles`
+/// particles; with `in.gravity_acceleration` set (self-gravity) the tree's acceleration is added,
+/// and the grad-h gravity term with in.zeta_over_omega.
 template<int D, flecsi_lite::privilege Ghost>
 double force_loop(const neighbourhood<D>& neighbours, const physics_settings& settings, double earlier,
-                  force_fields<D> in, std::size_t particles, ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt,
-                  wo<double> own_time_step) {
+                  force_fields<D> in, std::size_t particles, ro<particle_kind> kind, wo<vector<D>> acceleration,
+                  wo<double> du_dt, wo<double> own_time_step) {
   const neighbour_walk<D> walk(neighbours);
   const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
-  thread_local std::vector<double> inverse_h;  // kept from launch to launch: no allocation per step
+  std::vector<double>& inverse_h = inverse_h_buffer();
   inverse_smoothing_lengths(in.h, particles, inverse_h);
   in.inverse_h = inverse_h.data();
   double smallest = std::numeric_limits<double>::max();
@@ -203,7 +211,8 @@ double compute_forces(neighbours_ro<D> neighbours, physics_settings settings, do
   const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
                                    P.data(),   cs.data(), pressure_term.data(), u.data(),
                                    settings.balsara ? balsara.data() : nullptr};
-  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt, own_time_step);
+  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt,
+                                      own_time_step);
 }
 
 /// The same with self-gravity (Price & Monaghan 2007, sec. 3): dv_a/dt also has
@@ -227,7 +236,8 @@ double compute_forces_with_gravity(neighbours_ro<D> neighbours, physics_settings
   if (settings.gravity.grad_h) in.zeta_over_omega = zeta_over_omega.data();
   in.gravity_acceleration = gravity_acceleration.data();
   in.half_G = 0.5 * settings.gravity.constant;
-  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt, own_time_step);
+  return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt,
+                                      own_time_step);
 }
 
 } // namespace flecsph::sph
