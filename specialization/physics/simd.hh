@@ -128,8 +128,7 @@ public:
       // Added to the first part, then the parts rotate (register moves, not an indexed store):
       // after n packs, part k holds stripe (k + n) mod parts.
       part_[0] += terms;
-      for (std::size_t p = 1; p < parts; ++p) std::swap(part_[p - 1], part_[p]);
-      next_ = next_ + 1 == parts ? 0 : next_ + 1;
+      skip();
     } else {
 #if FLECSPH_HAVE_STD_SIMD
       for (const auto& piece : stdx::split<accumulator>(terms)) part_[0] += piece;
@@ -137,6 +136,13 @@ public:
     }
   }
   FLECSPH_SIMD_INLINE void subtract(const T& terms) { add(-terms); }
+  /// The next lanes<T> terms, all zero (the same as adding them): only the stripes move on.
+  FLECSPH_SIMD_INLINE void skip() {
+    if constexpr (parts > 1) {
+      for (std::size_t p = 1; p < parts; ++p) std::swap(part_[p - 1], part_[p]);
+      next_ = next_ + 1 == parts ? 0 : next_ + 1;
+    }
+  }
 
   /// (s0 + s1) + (s2 + s3).
   FLECSPH_SIMD_INLINE double total() const {

@@ -77,17 +77,20 @@ KOKKOS_INLINE_FUNCTION double balsara_switch(double div_v, double curl_v_magnitu
 /// for approaching pairs (w_ab < 0) and v_sig = c_a + c_b otherwise (Springel 2005, MNRAS 364,
 /// 1105, eq. 13, beta_signal = 3; Monaghan 1997).
 template<class T>
-KOKKOS_INLINE_FUNCTION T signal_velocity(T c_a, T c_b, T r_dot_v, T r, double beta_signal = 3.0) {
-  const T w = simd::select(r > 0.0, r_dot_v / r, T(0.0));  // r = 0: 0/0 computed, not taken
+KOKKOS_INLINE_FUNCTION T signal_velocity_of_approach(T c_a, T c_b, T w, double beta_signal) {
   return c_a + c_b - simd::select(w < 0.0, beta_signal * w, T(0.0));
+}
+template<class T>
+KOKKOS_INLINE_FUNCTION T signal_velocity(T c_a, T c_b, T r_dot_v, T r, double beta_signal = 3.0) {
+  // r = 0: 0/0 computed, not taken
+  return signal_velocity_of_approach(c_a, c_b, simd::select(r > 0.0, r_dot_v / r, T(0.0)), beta_signal);
 }
 
 /// The same for r > 0 given 1/r (the force loop's pairs): no division.
 template<class T>
 KOKKOS_INLINE_FUNCTION T signal_velocity_from_inverse(T c_a, T c_b, T r_dot_v, T inverse_r,
                                                       double beta_signal = 3.0) {
-  const T w = r_dot_v * inverse_r;
-  return c_a + c_b - simd::select(w < 0.0, beta_signal * w, T(0.0));
+  return signal_velocity_of_approach(c_a, c_b, T(r_dot_v * inverse_r), beta_signal);
 }
 
 /// Courant time step of one particle, C h / max_b v_sig,ab.

@@ -46,22 +46,13 @@ void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>*
     out.r.resize(padded);
     out.m.resize(padded);
   }
-  // Pack by pack, each lane as neighbour_walk::separation; past the end, lanes repeat the last
-  // entry and are overwritten by the padding below.
+  // Pack by pack; past the end, lanes repeat the last entry and are overwritten by the padding.
   namespace simd = physics::simd;
   using T = density_pack;
-  const vector<D>& x_a = x[a];
-  const std::size_t last = first + count - 1;
   for (std::size_t i = 0; i < count; i += W) {
-    std::size_t b[simd::lanes<T>], entry[simd::lanes<T>];
-    for (std::size_t l = 0; l < W; ++l) {
-      entry[l] = std::min(first + i + l, last);
-      b[l] = walk.neighbour(entry[l]);
-    }
-    T r[D], r2 = 0.0;
-    for (int k = 0; k < D; ++k) r[k] = x_a[k] - simd::generate<T>([&](std::size_t l) { return x[b[l]][k]; });
-    walk.subtract_shifts(entry, r);
-    for (int k = 0; k < D; ++k) r2 += r[k] * r[k];
+    std::size_t b[simd::lanes<T>];
+    T r[D];
+    const T r2 = walk.separations(first + i, first + count, x[a], x, b, r);
     simd::store(simd::square_root(r2), out.r.data() + i);
     simd::store(simd::generate<T>([&](std::size_t l) { return m[b[l]]; }), out.m.data() + i);
   }

@@ -80,23 +80,16 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
   const std::size_t first = walk.begin(a), end = walk.end(a);
   for (std::size_t j0 = first; j0 < end; j0 += W) {
     // Lane i holds entry j0 + i; past the end it repeats the last entry, masked out below.
-    std::size_t b[W], entry[W];
-    for (std::size_t i = 0; i < W; ++i) {
-      entry[i] = std::min(j0 + i, end - 1);
-      b[i] = walk.neighbour(entry[i]);
-    }
+    std::size_t b[W];
+    T r[D], r_dot_v = 0.0;
+    const T r2 = walk.separations(j0, end, x_a, in.x, b, r);
     const auto gather = [&](const double* field) { return simd::generate<T>([&](std::size_t i) { return field[b[i]]; }); };
-    T r[D], r2 = 0.0, r_dot_v = 0.0;
-    for (int k = 0; k < D; ++k) r[k] = x_a[k] - simd::generate<T>([&](std::size_t i) { return in.x[b[i]][k]; });
-    walk.subtract_shifts(entry, r);  // neighbour_walk::separation, lane by lane
-    for (int k = 0; k < D; ++k) r2 += r[k] * r[k];
     const T h_b = gather(in.h), h_max = simd::maximum(T(h_a), h_b);
     const auto pair = (lane < double(end - j0)) && !(r2 >= support2 * h_max * h_max) && (r2 != 0.0);
     const T zero = 0.0;
     if (!simd::any_lane(pair)) {
-      // Every stripe still takes its lanes (+0), so that entry j stays in stripe j mod 4.
-      for (int k = 0; k < D; ++k) sum_v[k].add(zero);
-      sum_u.add(zero);
+      for (int k = 0; k < D; ++k) sum_v[k].skip();
+      sum_u.skip();
       continue;
     }
     const T distance = simd::square_root(r2), inverse_r = 1.0 / distance;

@@ -103,15 +103,26 @@ struct neighbour_walk {
   /// Whether entry j is a periodic image (its shift is not the zero vector).
   bool shifted(std::size_t j) const { return tree::packed_shift(entries[j]) != tree::zero_shift<D>; }
 
-  /// Subtracts from r (packs per axis) the shifts of the list entries j[0..lanes), unless none
-  /// is an image (most entries): the table's zero shift is +0, and x - (+0) = x, so the
-  /// separations have the same bits as neighbour_walk::separation either way.
+  /// separation() for the list entries j0 .. j0 + Lanes at once (past `end`, lanes repeat the
+  /// last entry; the caller masks them): their neighbours in b, r_ab as packs per axis, and
+  /// |r_ab|^2, each lane bitwise separation(). The shifts are loaded only when an entry is an
+  /// image (most are not): the table's zero shift is +0, and x - (+0) = x.
   template<class T, std::size_t Lanes>
-  FLECSPH_SIMD_INLINE void subtract_shifts(const std::size_t (&j)[Lanes], T (&r)[D]) const {
-    bool any = false;
-    for (std::size_t i = 0; i < Lanes; ++i) any |= shifted(j[i]);
-    if (any)
+  FLECSPH_SIMD_INLINE T separations(std::size_t j0, std::size_t end, const vector<D>& x_a, const vector<D>* x,
+                                    std::size_t (&b)[Lanes], T (&r)[D]) const {
+    std::size_t j[Lanes];
+    bool any_shifted = false;
+    for (std::size_t i = 0; i < Lanes; ++i) {
+      j[i] = std::min(j0 + i, end - 1);
+      b[i] = neighbour(j[i]);
+      any_shifted |= shifted(j[i]);
+    }
+    for (int k = 0; k < D; ++k) r[k] = x_a[k] - physics::simd::generate<T>([&](std::size_t i) { return x[b[i]][k]; });
+    if (any_shifted)
       for (int k = 0; k < D; ++k) r[k] -= physics::simd::generate<T>([&](std::size_t i) { return shift(j[i])[k]; });
+    T r2 = 0.0;
+    for (int k = 0; k < D; ++k) r2 += r[k] * r[k];
+    return r2;
   }
 
   /// r_ab = (x_a - x_b) - shift_j for entry j of a's list, and |r_ab|^2. Grouped so that the

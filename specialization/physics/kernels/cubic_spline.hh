@@ -40,30 +40,27 @@ struct cubic_spline_shape {
   /// computed and each lane takes its own (the same bits as the branches).
   template<int D, class T>
   KOKKOS_INLINE_FUNCTION static T derivative_over_q(T q) {
-    if constexpr (std::is_same_v<T, double>) {
-      if (q < 1.0) return -3.0 + 2.25 * q;
-      if (q < 2.0) return -0.75 * integer_power<2>(2.0 - q) / q;
-      return 0.0;
-    } else {
-      return simd::select(q < 1.0, -3.0 + 2.25 * q,
-                          simd::select(q < 2.0, -0.75 * integer_power<2>(2.0 - q) / q, T(0.0)));
-    }
+    return derivative_over_q_pieces(q, [](T p) -> T { return -0.75 * integer_power<2>(2.0 - p) / p; });
   }
 
   /// The same from q and 1/q, with no division: -3/4 (2-q)^2 (1/q) on [1,2].
   template<int D, class T>
   KOKKOS_INLINE_FUNCTION static T derivative_over_q_from(T q, T inverse_q) {
-    if constexpr (std::is_same_v<T, double>) {
-      if (q < 1.0) return -3.0 + 2.25 * q;
-      if (q < 2.0) return -0.75 * integer_power<2>(2.0 - q) * inverse_q;
-      return 0.0;
-    } else {
-      return simd::select(q < 1.0, -3.0 + 2.25 * q,
-                          simd::select(q < 2.0, -0.75 * integer_power<2>(2.0 - q) * inverse_q, T(0.0)));
-    }
+    return derivative_over_q_pieces(q, [inverse_q](T p) -> T { return -0.75 * integer_power<2>(2.0 - p) * inverse_q; });
   }
 
 private:
+  /// f'(q)/q with the piece on [1,2] given: a branch for one double, a lane selection for a pack.
+  template<class T, class Outer>
+  KOKKOS_INLINE_FUNCTION static T derivative_over_q_pieces(T q, Outer&& outer) {
+    if constexpr (std::is_same_v<T, double>) {
+      if (q < 1.0) return -3.0 + 2.25 * q;
+      if (q < 2.0) return outer(q);
+      return 0.0;
+    } else {
+      return simd::select(q < 1.0, -3.0 + 2.25 * q, simd::select(q < 2.0, outer(q), T(0.0)));
+    }
+  }
   // max(x, 0) as (x + |x|) / 2, exact: a form compilers do not turn back into a branch.
   template<class T>
   KOKKOS_INLINE_FUNCTION static T positive_part(T x) { return 0.5 * (x + simd::absolute(x)); }
