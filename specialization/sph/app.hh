@@ -14,6 +14,7 @@
 
 #include "specialization/sph/driver.hh"
 #include "specialization/sph/gravity.hh"
+#include "specialization/sph/instances.hh"
 #include "specialization/sph/particle_input.hh"
 #include "specialization/sph/particle_output.hh"
 #include "specialization/sph/restart.hh"
@@ -414,5 +415,10 @@ flecsi_lite::app::definition frame_definition(const app_definition& app);
 /// --parameters-help, --control-model, and the frame's exit statuses (0 run; 1 a check failed;
 /// 2 bad parameters; 3 any other error, reported on rank 0 with what was wrong).
 int app_main(int argc, char** argv, const app_definition& app);
+
+// Compiled in the library (instances_*.cc).
+FLECSPH_SPH_APP_INSTANCES(extern, 1)
+FLECSPH_SPH_APP_INSTANCES(extern, 2)
+FLECSPH_SPH_APP_INSTANCES(extern, 3)
 
 } // namespace flecsph::sph

@@ -38,7 +38,7 @@ struct snapshot_run {
 
 /// `<stem>_NNNN.hdf5` and `<stem>.xdmf` beside output_file (`<program>` when there is none).
 inline std::string snapshot_path(const std::string& output_file, const std::string& program, std::int64_t index) {
-  char number[24];
+  char number[32];  // "_", 20 digits and a sign, ".hdf5", NUL
   std::snprintf(number, sizeof number, "_%04lld.hdf5", static_cast<long long>(index));
   return flecsi_lite::app::beside_output(output_file, program, number);
 }

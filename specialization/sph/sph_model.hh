@@ -15,6 +15,7 @@
 #pragma once
 
 #include "specialization/sph/diagnostics.hh"
+#include "specialization/sph/instances.hh"
 #include "specialization/sph/simulation.hh"
 #include "specialization/sph/steps.hh"
 
@@ -94,5 +95,10 @@ flecsi_lite::control::control_model<State> make_control_model() {
   on("finalize", "summary", run_summary<D>);
   return m;
 }
+
+// Compiled in the library (instances_*.cc).
+FLECSPH_SPH_STEP_INSTANCES(extern, 1)
+FLECSPH_SPH_STEP_INSTANCES(extern, 2)
+FLECSPH_SPH_STEP_INSTANCES(extern, 3)
 
 } // namespace flecsph::sph
