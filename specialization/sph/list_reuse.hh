@@ -56,7 +56,7 @@ neighbour_slack measure_neighbour_slack(neighbours_ro<D> neighbours_object, tree
   neighbour_slack slack;
   slack.distribution = measure_distribution_slack(h, drift, distributed_h);
   constexpr double infinite = std::numeric_limits<double>::infinity();
-  if (n.listed_h.size() != h.size()) {  // no lists of these particles yet
+  if (n.listed_h.size() != h.size()) {  // no lists of these particles yet, or none to keep (no skin)
     slack.lists.displacement = infinite;
     return slack;
   }

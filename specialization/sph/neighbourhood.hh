@@ -39,8 +39,8 @@ struct neighbourhood {
   std::array<vector<D>, tree::shift_code_count<D>> shift_table{};  ///< displacement per shift code
   double reach = 2.0;       ///< the reach the lists hold, in units of h (>= the kernel support 2)
   double list_reach = 2.0;  ///< the reach they were searched with (>= reach)
-  std::vector<vector<D>> listed_x;  ///< position of each owned particle at the search
-  std::vector<double> listed_h;     ///< its h then
+  std::vector<vector<D>> listed_x;  ///< position of each owned particle at the search (with a skin)
+  std::vector<double> listed_h;     ///< its h then (with a skin)
   /// The owned targets whose lists hold owned particles only (a periodic image of an owned
   /// particle is owned data), and the others, whose lists hold a ghost; each ascending, together
   /// every target once. Filled with the lists (split_targets).
@@ -194,6 +194,14 @@ void finish_search(const tree::local_tree<D>& local, neighbourhood<D>& out, doub
   out.reach = support;
   out.list_reach = list_reach;
   const std::size_t owned = local.owned_size();
+  split_targets(out, local.size());
+  if (!(list_reach > support)) {
+    // Without a skin a list never outlives a step (list_reuse.hh: any motion, and h not
+    // shrinking, uses up a skin of 0): no positions and h to keep, 32 bytes a particle in 3D.
+    out.listed_x = {};
+    out.listed_h = {};
+    return;
+  }
   out.listed_x.resize(owned);
   out.listed_h.resize(owned);
   const std::size_t* sorted = local.storage_to_sorted().data();
@@ -203,7 +211,6 @@ void finish_search(const tree::local_tree<D>& local, neighbourhood<D>& out, doub
     out.listed_x[a] = x[sorted[a]];
     out.listed_h[a] = h[sorted[a]];
   }, "sph::search_neighbours::listed");
-  split_targets(out, local.size());
 }
 } // namespace detail
 
