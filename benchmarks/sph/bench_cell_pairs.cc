@@ -8,15 +8,16 @@
 // - lists: the pair rows of the SPH step (neighbourhood, packed entries with shift codes, in
 //   ascending index order), gathered once per target into |r_ab| and m_b (detail::gather_pairs),
 //   then summed (detail::density_sums); forces by detail::force_sums: the code of the SPH step.
-// - cells: the particles sorted into a grid of cells of side >= support / S (x fastest), as SoA
-//   arrays; a target's candidates are the (2S+1)^2 rows of 2S+1 cells around its cell, each row
-//   contiguous in memory (split where it wraps), loaded pack by pack with no gather; lanes
-//   outside the support are masked. No list is built or kept. The force pass repeats
+// - cells: the particles sorted into a grid of cells of side >= support / S (x fastest, by x
+//   within a cell), as SoA arrays; a target's candidates are the (2S+1)^2 rows of 2S+1 cells
+//   around its cell, each row contiguous in memory (split where it wraps), loaded pack by pack
+//   with no gather, whole or cut to reach along x; lanes outside the support are masked. No
+//   list is built or kept. The force pass repeats
 //   force_sums' pair arithmetic (the same physics functions, in the same order) with loads in
 //   place of gathers.
 //
 // The lists' own search is not timed here (bench_sedov reports it: sph::search_neighbours); the
-// grid's counting sort is. Uniform h (a lattice, optionally jittered): the Sedov benchmark's
+// grid's sort is. Uniform h (a lattice, optionally jittered): the Sedov benchmark's
 // particles before the blast reaches them. Not a test: the comparison prints both sums' largest
 // relative difference, which must stay at rounding level (the sums' order differs).
 #include "specialization/sph/density.hh"
@@ -37,11 +38,13 @@
 
 namespace {
 namespace sph = flecsph::sph;
-namespace simd = flecsph::physics::simd;
+namespace physics = flecsph::physics;
+namespace simd = physics::simd;
 namespace tree = flecsi_lite::topology::ntree;
-using Kernel = flecsph::physics::cubic_spline<3>;
-using pack = sph::detail::density_pack;
-constexpr std::size_t W = simd::lanes<pack>;
+using Kernel = physics::cubic_spline<3>;
+using pack = sph::detail::density_pack;  // the density's packs, as compute_density's
+using force_pack = simd::pack;           // the forces', as compute_forces'
+constexpr std::size_t W = std::max(simd::lanes<pack>, simd::lanes<force_pack>);  ///< the arrays' padding
 
 struct options {
   int per_side = 50;
@@ -222,7 +225,7 @@ private:
 template<bool Cut>
 void density_by_cells(const cell_grid& g, double h, int S, std::vector<double>& rho, std::vector<double>& drho_dh) {
   const sph::kernel_at<Kernel> kernel(h);
-  const double reach = flecsph::physics::kernel_support * h, reach2 = reach * reach;
+  const double reach = physics::kernel_support * h, reach2 = reach * reach;
   const pack lane = simd::generate<pack>([](std::size_t i) { return double(i); }), zero = 0.0;
   cell_rows<Cut> rows(g, S, reach);
   const int C = g.cells;
@@ -236,7 +239,7 @@ void density_by_cells(const cell_grid& g, double h, int S, std::vector<double>& 
           rows.visit(a, [&](const candidate_range& r) {
             // r_ab = x_a - (x_b + shift) = (x_a - shift) - x_b
             const double xa = g.x[a] - r.shift[0], ya = g.y[a] - r.shift[1], za = g.z[a] - r.shift[2];
-            for (std::size_t j = r.begin; j < r.end; j += W) {
+            for (std::size_t j = r.begin; j < r.end; j += simd::lanes<pack>) {
               const pack dx = xa - simd::load<pack>(&g.x[j]), dy = ya - simd::load<pack>(&g.y[j]),
                          dz = za - simd::load<pack>(&g.z[j]);
               const pack r2 = dx * dx + dy * dy + dz * dz;
@@ -280,7 +283,7 @@ double candidate_count(const cell_grid& g, int S, double reach) {
 /// ascending index per row with packed shift codes: the neighbourhood the SPH step would hold.
 sph::neighbourhood<3> lists_of(const cell_grid& g, double h, int S) {
   sph::neighbourhood<3> n;
-  const double reach = flecsph::physics::kernel_support * h, reach2 = reach * reach;
+  const double reach = physics::kernel_support * h, reach2 = reach * reach;
   for (int code = 0; code < tree::shift_code_count<3>; ++code)
     for (int k = 0, c = code; k < 3; ++k, c /= 3) n.shift_table[code][k] = double(c % 3 - 1);
   std::vector<std::uint32_t> row;
@@ -360,10 +363,11 @@ struct force_results {
 /// The cell route of the force pass: force_sums' arithmetic on contiguous packs of the cell rows
 /// (with Cut, cut to reach along x; reach: the support of the largest h).
 template<bool Cut>
-void forces_by_cells(const cell_grid& g, const force_inputs& f, int S, const flecsph::physics::viscosity_parameters& viscosity,
+void forces_by_cells(const cell_grid& g, const force_inputs& f, int S, const physics::viscosity_parameters& viscosity,
                      double reach, force_results& out) {
-  const double support2 = flecsph::physics::kernel_support * flecsph::physics::kernel_support;
-  const pack lane = simd::generate<pack>([](std::size_t i) { return double(i); }), zero = 0.0;
+  using T = force_pack;
+  const double support2 = physics::kernel_support * physics::kernel_support;
+  const T lane = simd::generate<T>([](std::size_t i) { return double(i); }), zero = 0.0;
   cell_rows<Cut> rows(g, S, reach);
   const int C = g.cells;
   for (int cz = 0; cz < C; ++cz)
@@ -374,43 +378,45 @@ void forces_by_cells(const cell_grid& g, const force_inputs& f, int S, const fle
         for (std::size_t a = g.start[cell]; a < g.start[cell + 1]; ++a) {
           const double h_a = f.h[a], rho_a = f.rho[a], c_a = f.cs[a], term_a = f.pressure_term[a];
           const double v_a[3] = {f.vx[a], f.vy[a], f.vz[a]};
-          const sph::kernel_at<Kernel, pack> kernel_a(pack(h_a), pack(f.inverse_h[a]));
-          const flecsph::physics::basic_viscosity_particle<pack> particle_a{rho_a, c_a, h_a, 1.0};
-          simd::striped_sum<pack> sum_v[3], sum_u;
-          pack largest = c_a;
+          const sph::kernel_at<Kernel, T> kernel_a(T(h_a), T(f.inverse_h[a]));
+          const physics::basic_viscosity_particle<T> particle_a{rho_a, c_a, h_a, 1.0};
+          simd::striped_sum<T> sum_v[3], sum_u;
+          T largest = c_a;
           rows.visit(a, [&](const candidate_range& range) {
             const double x_a[3] = {g.x[a] - range.shift[0], g.y[a] - range.shift[1], g.z[a] - range.shift[2]};
             const double* x[3] = {g.x.data(), g.y.data(), g.z.data()};
             const double* v[3] = {f.vx.data(), f.vy.data(), f.vz.data()};
-            for (std::size_t j = range.begin; j < range.end; j += W) {
-              pack r[3], r2 = 0.0, r_dot_v = 0.0;
+            for (std::size_t j = range.begin; j < range.end; j += simd::lanes<T>) {
+              T r[3], r2 = 0.0, r_dot_v = 0.0;
               for (int k = 0; k < 3; ++k) {
-                r[k] = x_a[k] - simd::load<pack>(x[k] + j);
+                r[k] = x_a[k] - simd::load<T>(x[k] + j);
                 r2 += r[k] * r[k];
               }
-              const pack h_b = simd::load<pack>(&f.h[j]), h_max = simd::maximum(pack(h_a), h_b);
+              const T h_b = simd::load<T>(&f.h[j]), h_max = simd::maximum(T(h_a), h_b);
               const auto pair = (lane < double(range.end - j)) && !(r2 >= support2 * h_max * h_max) && (r2 != 0.0);
               if (!simd::any_lane(pair)) {
                 for (auto& s : sum_v) s.skip();
                 sum_u.skip();
                 continue;
               }
-              const pack distance = simd::square_root(r2), inverse_r = 1.0 / distance;
-              const pack F_a = kernel_a.gradient_factor(distance, inverse_r);
-              const pack F_b = sph::kernel_at<Kernel, pack>(h_b, simd::load<pack>(&f.inverse_h[j])).gradient_factor(distance, inverse_r);
-              const pack F_ab = 0.5 * (F_a + F_b);
-              for (int k = 0; k < 3; ++k) r_dot_v += r[k] * (v_a[k] - simd::load<pack>(v[k] + j));
-              const pack c_b = simd::load<pack>(&f.cs[j]), rho_b = simd::load<pack>(&f.rho[j]);
-              const pack Pi = simd::select(
+              const T distance = simd::square_root(r2), inverse_r = 1.0 / distance;
+              const T F_a = kernel_a.gradient_factor(distance, inverse_r);
+              const sph::kernel_at<Kernel, T> kernel_b(h_b, simd::load<T>(&f.inverse_h[j]));
+              const T F_b = kernel_b.gradient_factor(distance, inverse_r);
+              const T F_ab = 0.5 * (F_a + F_b);
+              for (int k = 0; k < 3; ++k) r_dot_v += r[k] * (v_a[k] - simd::load<T>(v[k] + j));
+              const T c_b = simd::load<T>(&f.cs[j]), rho_b = simd::load<T>(&f.rho[j]);
+              const T Pi = simd::select(
                 r_dot_v < 0.0,
-                flecsph::physics::approaching_pair_viscosity<pack>(viscosity, r_dot_v, r2, particle_a, {rho_b, c_b, h_b, pack(1.0)}),
+                physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
+                                                       {rho_b, c_b, h_b, T(1.0)}),
                 zero);
-              const pack bracket = (term_a * F_a + simd::load<pack>(&f.pressure_term[j]) * F_b) + Pi * F_ab;
-              const pack m_b = simd::load<pack>(&g.m[j]);
+              const T bracket = (term_a * F_a + simd::load<T>(&f.pressure_term[j]) * F_b) + Pi * F_ab;
+              const T m_b = simd::load<T>(&g.m[j]);
               for (int k = 0; k < 3; ++k) sum_v[k].subtract(simd::select(pair, m_b * bracket * r[k], zero));
               sum_u.add(simd::select(pair, m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v, zero));
-              largest = simd::maximum(
-                largest, simd::select(pair, flecsph::physics::signal_velocity_from_inverse<pack>(c_a, c_b, r_dot_v, inverse_r), zero));
+              const T signal = physics::signal_velocity_from_inverse<T>(c_a, c_b, r_dot_v, inverse_r);
+              largest = simd::maximum(largest, simd::select(pair, signal, zero));
             }
           });
           out.ax[a] = sum_v[0].total(), out.ay[a] = sum_v[1].total(), out.az[a] = sum_v[2].total();
@@ -422,7 +428,7 @@ void forces_by_cells(const cell_grid& g, const force_inputs& f, int S, const fle
 
 /// The list route of the force pass: compute_forces' own sums.
 void forces_by_lists(const sph::neighbourhood<3>& n, const std::vector<sph::vector<3>>& x, const std::vector<double>& m,
-                     const force_inputs& f, const flecsph::physics::viscosity_parameters& viscosity, force_results& out) {
+                     const force_inputs& f, const physics::viscosity_parameters& viscosity, force_results& out) {
   const sph::neighbour_walk<3> walk(n);
   sph::detail::force_fields<3> in{x.data(), f.v.data(), m.data(), f.h.data(), f.rho.data(), f.P.data(), f.cs.data(),
                                   f.pressure_term.data(), f.u.data(), nullptr};
@@ -462,7 +468,7 @@ int main(int argc, char** argv) {
   const int N = o.per_side;
   const std::size_t n = std::size_t(N) * N * N;
   const double spacing = 1.0 / N, h = o.eta * spacing, mass = 1.0 / double(n);
-  const double support = flecsph::physics::kernel_support * h;
+  const double support = physics::kernel_support * h;
   const int cells = int(std::floor(o.split / support));
   if (cells < 2 * o.split + 1) usage("too few particles per side for cells of side support / split");
 
@@ -493,7 +499,7 @@ int main(int argc, char** argv) {
   const double lists_2_s = fastest_of(o.repeats, [&] { density_by_lists(lists, x, m, h, 2, rho_l, drho_l); });
 
   const force_inputs gas = gas_state(rho_l, h, n);
-  const flecsph::physics::viscosity_parameters viscosity{};
+  const physics::viscosity_parameters viscosity{};
   force_results forces_c(n), forces_l(n);
   const double forces_cells_s =
     fastest_of(o.repeats, [&] { forces_by_cells<false>(grid, gas, o.split, viscosity, support, forces_c); });
@@ -501,15 +507,17 @@ int main(int argc, char** argv) {
     fastest_of(o.repeats, [&] { forces_by_cells<true>(grid, gas, o.split, viscosity, support, forces_c); });
   const double forces_lists_s = fastest_of(o.repeats, [&] { forces_by_lists(lists, x, m, gas, viscosity, forces_l); });
 
-  const double worst = std::max({relative_difference(rho_c, rho_l), relative_difference(drho_c, drho_l),
-                                 relative_difference(forces_c.ax, forces_l.ax), relative_difference(forces_c.ay, forces_l.ay),
-                                 relative_difference(forces_c.az, forces_l.az), relative_difference(forces_c.du, forces_l.du),
-                                 relative_difference(forces_c.signal, forces_l.signal)});
+  const double worst = std::max(
+    {relative_difference(rho_c, rho_l), relative_difference(drho_c, drho_l),
+     relative_difference(forces_c.ax, forces_l.ax), relative_difference(forces_c.ay, forces_l.ay),
+     relative_difference(forces_c.az, forces_l.az), relative_difference(forces_c.du, forces_l.du),
+     relative_difference(forces_c.signal, forces_l.signal)});
 
   const double hits = double(lists.lists.total());
   const auto cycles = [&](double seconds) { return seconds * ghz * 1e9 / hits; };
-  std::cout << std::fixed << std::setprecision(1) << "bench_cell_pairs: " << N << "^3 particles, eta " << std::setprecision(2) << o.eta
-            << ", jitter " << o.jitter << std::setprecision(1) << ", " << W << " lanes, cells of side >= support/" << o.split << " ("
+  std::cout << std::fixed << "bench_cell_pairs: " << N << "^3 particles, eta " << std::setprecision(2) << o.eta
+            << ", jitter " << o.jitter << std::setprecision(1) << ", " << simd::lanes<pack> << " / "
+            << simd::lanes<force_pack> << " lanes (density / forces), cells of side >= support/" << o.split << " ("
             << cells << "^3, " << double(n) / (double(cells) * cells * cells) << " particles each)\n"
             << "  pairs within the support per particle " << hits / double(n) << "; candidates of the cell rows "
             << candidates / double(n) << " (" << std::setprecision(2) << candidates / hits
