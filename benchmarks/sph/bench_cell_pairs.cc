@@ -194,6 +194,20 @@ public:
     for (auto& c : cut_) c.end = c.begin;
   }
 
+  /// visit(a) for every particle a of the grid, cell by cell (x fastest), after start() of its
+  /// cell: visit() then gives a's rows.
+  template<class Visit>
+  void for_each_target(Visit&& visit) {
+    const int C = g_.cells;
+    for (int cz = 0; cz < C; ++cz)
+      for (int cy = 0; cy < C; ++cy)
+        for (int cx = 0; cx < C; ++cx) {
+          start(cx, cy, cz);
+          const std::size_t cell = g_.cell_of(cx, cy, cz);
+          for (std::size_t a = g_.start[cell]; a < g_.start[cell + 1]; ++a) visit(a);
+        }
+  }
+
   /// visit(range) for each row of target a (a particle of the started cell; ascending a).
   template<class Visit>
   void visit(std::size_t a, Visit&& visit) {
@@ -228,38 +242,31 @@ void density_by_cells(const cell_grid& g, double h, int S, std::vector<double>& 
   const double reach = physics::kernel_support * h, reach2 = reach * reach;
   const pack lane = simd::generate<pack>([](std::size_t i) { return double(i); }), zero = 0.0;
   cell_rows<Cut> rows(g, S, reach);
-  const int C = g.cells;
-  for (int cz = 0; cz < C; ++cz)
-    for (int cy = 0; cy < C; ++cy)
-      for (int cx = 0; cx < C; ++cx) {
-        const std::size_t cell = g.cell_of(cx, cy, cz);
-        rows.start(cx, cy, cz);
-        for (std::size_t a = g.start[cell]; a < g.start[cell + 1]; ++a) {
-          simd::striped_sum<pack> sum, derivative;
-          rows.visit(a, [&](const candidate_range& r) {
-            // r_ab = x_a - (x_b + shift) = (x_a - shift) - x_b
-            const double xa = g.x[a] - r.shift[0], ya = g.y[a] - r.shift[1], za = g.z[a] - r.shift[2];
-            for (std::size_t j = r.begin; j < r.end; j += simd::lanes<pack>) {
-              const pack dx = xa - simd::load<pack>(&g.x[j]), dy = ya - simd::load<pack>(&g.y[j]),
-                         dz = za - simd::load<pack>(&g.z[j]);
-              const pack r2 = dx * dx + dy * dy + dz * dz;
-              const auto inside = (r2 < reach2) && (lane < double(r.end - j));
-              if (!simd::any_lane(inside)) {
-                sum.skip();
-                derivative.skip();
-                continue;
-              }
-              pack w, dw_dh;
-              kernel.value_and_h_derivative(simd::square_root(r2), w, dw_dh);
-              const pack m = simd::load<pack>(&g.m[j]);
-              sum.add(simd::select(inside, m * w, zero));
-              derivative.add(simd::select(inside, m * dw_dh, zero));
-            }
-          });
-          rho[a] = sum.total();
-          drho_dh[a] = derivative.total();
+  rows.for_each_target([&](std::size_t a) {
+    simd::striped_sum<pack> sum, derivative;
+    rows.visit(a, [&](const candidate_range& r) {
+      // r_ab = x_a - (x_b + shift) = (x_a - shift) - x_b
+      const double xa = g.x[a] - r.shift[0], ya = g.y[a] - r.shift[1], za = g.z[a] - r.shift[2];
+      for (std::size_t j = r.begin; j < r.end; j += simd::lanes<pack>) {
+        const pack dx = xa - simd::load<pack>(&g.x[j]), dy = ya - simd::load<pack>(&g.y[j]),
+                   dz = za - simd::load<pack>(&g.z[j]);
+        const pack r2 = dx * dx + dy * dy + dz * dz;
+        const auto inside = (r2 < reach2) && (lane < double(r.end - j));
+        if (!simd::any_lane(inside)) {
+          sum.skip();
+          derivative.skip();
+          continue;
         }
+        pack w, dw_dh;
+        kernel.value_and_h_derivative(simd::square_root(r2), w, dw_dh);
+        const pack m = simd::load<pack>(&g.m[j]);
+        sum.add(simd::select(inside, m * w, zero));
+        derivative.add(simd::select(inside, m * dw_dh, zero));
       }
+    });
+    rho[a] = sum.total();
+    drho_dh[a] = derivative.total();
+  });
 }
 
 /// Candidates of the cell rows (the particles the cell route loads) over all targets.
@@ -267,15 +274,9 @@ template<bool Cut>
 double candidate_count(const cell_grid& g, int S, double reach) {
   double candidates = 0;
   cell_rows<Cut> rows(g, S, reach);
-  const int C = g.cells;
-  for (int cz = 0; cz < C; ++cz)
-    for (int cy = 0; cy < C; ++cy)
-      for (int cx = 0; cx < C; ++cx) {
-        const std::size_t cell = g.cell_of(cx, cy, cz);
-        rows.start(cx, cy, cz);
-        for (std::size_t a = g.start[cell]; a < g.start[cell + 1]; ++a)
-          rows.visit(a, [&](const candidate_range& r) { candidates += double(r.end - r.begin); });
-      }
+  rows.for_each_target([&](std::size_t a) {
+    rows.visit(a, [&](const candidate_range& r) { candidates += double(r.end - r.begin); });
+  });
   return candidates;
 }
 
@@ -286,30 +287,26 @@ sph::neighbourhood<3> lists_of(const cell_grid& g, double h, int S) {
   const double reach = physics::kernel_support * h, reach2 = reach * reach;
   for (int code = 0; code < tree::shift_code_count<3>; ++code)
     for (int k = 0, c = code; k < 3; ++k, c /= 3) n.shift_table[code][k] = double(c % 3 - 1);
-  std::vector<std::uint32_t> row;
-  const int C = g.cells;
   n.lists.offsets.assign(g.x.size() - W + 1, 0);
-  for (int cz = 0; cz < C; ++cz)
-    for (int cy = 0; cy < C; ++cy)
-      for (int cx = 0; cx < C; ++cx) {
-        const std::size_t cell = g.cell_of(cx, cy, cz);
-        for (std::size_t a = g.start[cell]; a < g.start[cell + 1]; ++a) {
-          row.clear();
-          for_each_row(g, cx, cy, cz, S, [&](const candidate_range& r) {
-            const auto code = tree::shift_code(int(r.shift[0] + 1) + 3 * int(r.shift[1] + 1) + 9 * int(r.shift[2] + 1));
-            for (std::size_t b = r.begin; b < r.end; ++b) {
-              const double dx = (g.x[a] - g.x[b]) - r.shift[0], dy = (g.y[a] - g.y[b]) - r.shift[1],
-                           dz = (g.z[a] - g.z[b]) - r.shift[2];
-              if (dx * dx + dy * dy + dz * dz < reach2) row.push_back(tree::packed_entry(std::uint32_t(b), code));
-            }
-          });
-          std::sort(row.begin(), row.end(), [](std::uint32_t p, std::uint32_t q) {
-            return tree::packed_neighbour(p) < tree::packed_neighbour(q);
-          });
-          n.lists.neighbours.insert(n.lists.neighbours.end(), row.begin(), row.end());
-          n.lists.offsets[a + 1] = n.lists.neighbours.size();
-        }
+  std::vector<std::uint32_t> row;
+  cell_rows<false> rows(g, S, reach);
+  rows.for_each_target([&](std::size_t a) {
+    row.clear();
+    rows.visit(a, [&](const candidate_range& r) {
+      const int digits[3] = {int(r.shift[0]) + 1, int(r.shift[1]) + 1, int(r.shift[2]) + 1};
+      const auto code = tree::shift_code(digits[0] + 3 * digits[1] + 9 * digits[2]);
+      for (std::size_t b = r.begin; b < r.end; ++b) {
+        const double dx = (g.x[a] - g.x[b]) - r.shift[0], dy = (g.y[a] - g.y[b]) - r.shift[1],
+                     dz = (g.z[a] - g.z[b]) - r.shift[2];
+        if (dx * dx + dy * dy + dz * dz < reach2) row.push_back(tree::packed_entry(std::uint32_t(b), code));
       }
+    });
+    std::sort(row.begin(), row.end(), [](std::uint32_t p, std::uint32_t q) {
+      return tree::packed_neighbour(p) < tree::packed_neighbour(q);
+    });
+    n.lists.neighbours.insert(n.lists.neighbours.end(), row.begin(), row.end());
+    n.lists.offsets[a + 1] = n.lists.neighbours.size();
+  });
   return n;
 }
 
@@ -369,61 +366,54 @@ void forces_by_cells(const cell_grid& g, const force_inputs& f, int S, const phy
   const double support2 = physics::kernel_support * physics::kernel_support;
   const T lane = simd::generate<T>([](std::size_t i) { return double(i); }), zero = 0.0;
   cell_rows<Cut> rows(g, S, reach);
-  const int C = g.cells;
-  for (int cz = 0; cz < C; ++cz)
-    for (int cy = 0; cy < C; ++cy)
-      for (int cx = 0; cx < C; ++cx) {
-        const std::size_t cell = g.cell_of(cx, cy, cz);
-        rows.start(cx, cy, cz);
-        for (std::size_t a = g.start[cell]; a < g.start[cell + 1]; ++a) {
-          const double h_a = f.h[a], rho_a = f.rho[a], c_a = f.cs[a], term_a = f.pressure_term[a];
-          const double v_a[3] = {f.vx[a], f.vy[a], f.vz[a]};
-          const sph::kernel_at<Kernel, T> kernel_a(T(h_a), T(f.inverse_h[a]));
-          const physics::basic_viscosity_particle<T> particle_a{rho_a, c_a, h_a, 1.0};
-          simd::striped_sum<T> sum_v[3], sum_u;
-          T largest = c_a;
-          rows.visit(a, [&](const candidate_range& range) {
-            const double x_a[3] = {g.x[a] - range.shift[0], g.y[a] - range.shift[1], g.z[a] - range.shift[2]};
-            const double* x[3] = {g.x.data(), g.y.data(), g.z.data()};
-            const double* v[3] = {f.vx.data(), f.vy.data(), f.vz.data()};
-            for (std::size_t j = range.begin; j < range.end; j += simd::lanes<T>) {
-              T r[3], r2 = 0.0, r_dot_v = 0.0;
-              for (int k = 0; k < 3; ++k) {
-                r[k] = x_a[k] - simd::load<T>(x[k] + j);
-                r2 += r[k] * r[k];
-              }
-              const T h_b = simd::load<T>(&f.h[j]), h_max = simd::maximum(T(h_a), h_b);
-              const auto pair = (lane < double(range.end - j)) && !(r2 >= support2 * h_max * h_max) && (r2 != 0.0);
-              if (!simd::any_lane(pair)) {
-                for (auto& s : sum_v) s.skip();
-                sum_u.skip();
-                continue;
-              }
-              const T distance = simd::square_root(r2), inverse_r = 1.0 / distance;
-              const T F_a = kernel_a.gradient_factor(distance, inverse_r);
-              const sph::kernel_at<Kernel, T> kernel_b(h_b, simd::load<T>(&f.inverse_h[j]));
-              const T F_b = kernel_b.gradient_factor(distance, inverse_r);
-              const T F_ab = 0.5 * (F_a + F_b);
-              for (int k = 0; k < 3; ++k) r_dot_v += r[k] * (v_a[k] - simd::load<T>(v[k] + j));
-              const T c_b = simd::load<T>(&f.cs[j]), rho_b = simd::load<T>(&f.rho[j]);
-              const T Pi = simd::select(
-                r_dot_v < 0.0,
-                physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
-                                                       {rho_b, c_b, h_b, T(1.0)}),
-                zero);
-              const T bracket = (term_a * F_a + simd::load<T>(&f.pressure_term[j]) * F_b) + Pi * F_ab;
-              const T m_b = simd::load<T>(&g.m[j]);
-              for (int k = 0; k < 3; ++k) sum_v[k].subtract(simd::select(pair, m_b * bracket * r[k], zero));
-              sum_u.add(simd::select(pair, m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v, zero));
-              const T signal = physics::signal_velocity_from_inverse<T>(c_a, c_b, r_dot_v, inverse_r);
-              largest = simd::maximum(largest, simd::select(pair, signal, zero));
-            }
-          });
-          out.ax[a] = sum_v[0].total(), out.ay[a] = sum_v[1].total(), out.az[a] = sum_v[2].total();
-          out.du[a] = sum_u.total();
-          out.signal[a] = simd::largest_lane(largest);
+  rows.for_each_target([&](std::size_t a) {
+    const double h_a = f.h[a], rho_a = f.rho[a], c_a = f.cs[a], term_a = f.pressure_term[a];
+    const double v_a[3] = {f.vx[a], f.vy[a], f.vz[a]};
+    const sph::kernel_at<Kernel, T> kernel_a(T(h_a), T(f.inverse_h[a]));
+    const physics::basic_viscosity_particle<T> particle_a{rho_a, c_a, h_a, 1.0};
+    simd::striped_sum<T> sum_v[3], sum_u;
+    T largest = c_a;
+    rows.visit(a, [&](const candidate_range& range) {
+      const double x_a[3] = {g.x[a] - range.shift[0], g.y[a] - range.shift[1], g.z[a] - range.shift[2]};
+      const double* x[3] = {g.x.data(), g.y.data(), g.z.data()};
+      const double* v[3] = {f.vx.data(), f.vy.data(), f.vz.data()};
+      for (std::size_t j = range.begin; j < range.end; j += simd::lanes<T>) {
+        T r[3], r2 = 0.0, r_dot_v = 0.0;
+        for (int k = 0; k < 3; ++k) {
+          r[k] = x_a[k] - simd::load<T>(x[k] + j);
+          r2 += r[k] * r[k];
         }
+        const T h_b = simd::load<T>(&f.h[j]), h_max = simd::maximum(T(h_a), h_b);
+        const auto pair = (lane < double(range.end - j)) && !(r2 >= support2 * h_max * h_max) && (r2 != 0.0);
+        if (!simd::any_lane(pair)) {
+          for (auto& s : sum_v) s.skip();
+          sum_u.skip();
+          continue;
+        }
+        const T distance = simd::square_root(r2), inverse_r = 1.0 / distance;
+        const T F_a = kernel_a.gradient_factor(distance, inverse_r);
+        const sph::kernel_at<Kernel, T> kernel_b(h_b, simd::load<T>(&f.inverse_h[j]));
+        const T F_b = kernel_b.gradient_factor(distance, inverse_r);
+        const T F_ab = 0.5 * (F_a + F_b);
+        for (int k = 0; k < 3; ++k) r_dot_v += r[k] * (v_a[k] - simd::load<T>(v[k] + j));
+        const T c_b = simd::load<T>(&f.cs[j]), rho_b = simd::load<T>(&f.rho[j]);
+        const T Pi = simd::select(
+          r_dot_v < 0.0,
+          physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
+                                                 {rho_b, c_b, h_b, T(1.0)}),
+          zero);
+        const T bracket = (term_a * F_a + simd::load<T>(&f.pressure_term[j]) * F_b) + Pi * F_ab;
+        const T m_b = simd::load<T>(&g.m[j]);
+        for (int k = 0; k < 3; ++k) sum_v[k].subtract(simd::select(pair, m_b * bracket * r[k], zero));
+        sum_u.add(simd::select(pair, m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v, zero));
+        const T signal = physics::signal_velocity_from_inverse<T>(c_a, c_b, r_dot_v, inverse_r);
+        largest = simd::maximum(largest, simd::select(pair, signal, zero));
       }
+    });
+    out.ax[a] = sum_v[0].total(), out.ay[a] = sum_v[1].total(), out.az[a] = sum_v[2].total();
+    out.du[a] = sum_u.total();
+    out.signal[a] = simd::largest_lane(largest);
+  });
 }
 
 /// The list route of the force pass: compute_forces' own sums.
