@@ -12,14 +12,15 @@
 //   within a cell), as SoA arrays; a target's candidates are the (2S+1)^2 rows of 2S+1 cells
 //   around its cell, each row contiguous in memory (split where it wraps), loaded pack by pack
 //   with no gather, whole or cut to reach along x; lanes outside the support are masked. No
-//   list is built or kept. The force pass repeats
-//   force_sums' pair arithmetic (the same physics functions, in the same order) with loads in
-//   place of gathers.
+//   list is built or kept. The force pass repeats force_sums' pair arithmetic (the same physics
+//   functions, in the same order) with loads in place of gathers.
 //
 // The lists' own search is not timed here (bench_sedov reports it: sph::search_neighbours); the
 // grid's sort is. Uniform h (a lattice, optionally jittered): the Sedov benchmark's
 // particles before the blast reaches them. Not a test: the comparison prints both sums' largest
 // relative difference, which must stay at rounding level (the sums' order differs).
+#include "nominal_clock.hh"
+
 #include "specialization/sph/density.hh"
 #include "specialization/sph/forces.hh"
 #include "specialization/physics/kernels/cubic_spline.hh"
@@ -29,7 +30,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <random>
@@ -83,14 +83,6 @@ options parse(int argc, char** argv) {
   if (o.per_side < 4 || o.eta <= 0 || o.jitter < 0 || o.jitter >= 1 || o.split < 1 || o.repeats < 1)
     usage("need --per-side >= 4, --eta > 0, 0 <= --jitter < 1, --split >= 1, --repeats >= 1");
   return o;
-}
-
-/// The first "cpu MHz" of /proc/cpuinfo (the nominal clock on these VMs), else 1 GHz.
-double nominal_clock_ghz() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  for (std::string line; std::getline(cpuinfo, line);)
-    if (line.rfind("cpu MHz", 0) == 0) return std::stod(line.substr(line.find(':') + 1)) / 1000;
-  return 1;
 }
 
 /// The particles in cell order (x fastest), as SoA arrays padded with W far-away entries.
@@ -454,7 +446,7 @@ double fastest_of(int repeats, F&& f) {
 
 int main(int argc, char** argv) {
   const options o = parse(argc, argv);
-  const double ghz = o.clock_ghz > 0 ? o.clock_ghz : nominal_clock_ghz();
+  const double ghz = flecsph::benchmarks::nominal_clock_ghz(o.clock_ghz);
   const int N = o.per_side;
   const std::size_t n = std::size_t(N) * N * N;
   const double spacing = 1.0 / N, h = o.eta * spacing, mass = 1.0 / double(n);

@@ -7,6 +7,7 @@
 //   mpirun -np 2 bench_sedov --per-side 100
 // benchmarks/sph/run_scaling.sh runs 1 rank x 1 thread, 1 x 2 and 2 x 1 and prints the speed-ups.
 #include "sedov_problem.hh"
+#include "nominal_clock.hh"
 
 #include "specialization/sph/driver.hh"
 
@@ -19,7 +20,6 @@
 
 #include <algorithm>
 #include <ctime>
-#include <fstream>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -40,17 +40,6 @@ struct bench_state : sph::simulation<D> {
   std::uint64_t moved_particles_before = 0;
   double moved_bytes_before = 0;
 };
-
-/// The clock of the cycle counts: --clock-ghz, else the first "cpu MHz" of /proc/cpuinfo (Linux:
-/// the nominal clock on these VMs), else 1 GHz (the counts are then nanoseconds).
-double clock_ghz(const std::string& option) {
-  if (const double given = std::stod(option); given > 0) return given;
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  for (std::string line; std::getline(cpuinfo, line);)
-    if (line.rfind("cpu MHz", 0) == 0 && line.find(':') != std::string::npos)
-      return std::stod(line.substr(line.find(':') + 1)) / 1000.0;
-  return 1.0;
-}
 
 /// The keys of the sedov app from `path`, then `overrides`; the benchmark uses the problem and
 /// physics keys (its run control and output are its own).
@@ -248,7 +237,7 @@ int main(int argc, char** argv) {
     bench_state s;
     s.warm_up_steps = count_option(rt.opts(), "warm-up");
     s.timed_steps = count_option(rt.opts(), "steps");
-    s.clock_ghz = clock_ghz(rt.opts().get("clock-ghz"));
+    s.clock_ghz = flecsph::benchmarks::nominal_clock_ghz(std::stod(rt.opts().get("clock-ghz")));
     std::vector<std::string> overrides{"particles_per_side=" + rt.opts().get("per-side"),
                                        "eta=" + rt.opts().get("eta")};
     for (const auto& extra : rt.opts().all("set")) overrides.push_back(extra);
