@@ -22,7 +22,7 @@ packages=(
   python3 python3-numpy python3-h5py python3-matplotlib
 )
 if [ "${FLECSPH_INSTALL_CLIENTS:-0}" = 1 ]; then
-  packages+=(python3-paraview xvfb splash python3-venv)
+  packages+=(python3-paraview xvfb splash python3-venv clang-format)
 fi
 
 missing=()
