@@ -34,7 +34,7 @@ const sph::particle_tree<3>::definition<vec> relaxation_acceleration{"bns_relaxa
 struct bns_run : sph::app_state<3> {
   bns::problem problem;
   double G = 1, K = 0, dynamical_time = 0, omega = 0;
-  double force_omega = 0;  ///< Omega of the stars' mean accelerations at the last relaxation step
+  double force_omega = 0;            ///< Omega of the stars' mean accelerations at the last relaxation step
   std::uint64_t first_star_end = 0;  ///< ids below: the first star (all of a single star)
   bool relaxing = false;
   double release_time = -1;  ///< when the relaxation ended (-1: not during this run)
@@ -53,15 +53,18 @@ void add_relaxation_acceleration(double inverse_damping, double omega2, std::arr
                                  std::uint64_t first_star_end, sph::ro<std::uint64_t> id,
                                  sph::ro<sph::particle_kind> kind, sph::ro<vec> x, sph::ro<vec> v, sph::rw<vec> a,
                                  sph::wo<vec> extra) {
-  flecsi_lite::forall(x.size(), [&](std::size_t p) {
-    vec added{};
-    if (kind(p) == sph::particle_kind::fluid) {
-      const vec& hold = held[static_cast<std::size_t>(bns::star_of(id(p), first_star_end))];
-      for (int k = 0; k < 3; ++k) added[k] = -v(p)[k] * inverse_damping - hold[k] + (k < 2 ? omega2 * x(p)[k] : 0.0);
-    }
-    for (int k = 0; k < 3; ++k) a(p)[k] += added[k];
-    extra(p) = added;
-  }, "bns::relaxation_acceleration");
+  flecsi_lite::forall(
+    x.size(),
+    [&](std::size_t p) {
+      vec added{};
+      if (kind(p) == sph::particle_kind::fluid) {
+        const vec& hold = held[static_cast<std::size_t>(bns::star_of(id(p), first_star_end))];
+        for (int k = 0; k < 3; ++k) added[k] = -v(p)[k] * inverse_damping - hold[k] + (k < 2 ? omega2 * x(p)[k] : 0.0);
+      }
+      for (int k = 0; k < 3; ++k) a(p)[k] += added[k];
+      extra(p) = added;
+    },
+    "bns::relaxation_acceleration");
 }
 
 void relaxation_forces(bns_run& s) {
@@ -91,9 +94,12 @@ void relaxation_forces(bns_run& s) {
 }
 
 void polytrope_energy(double K, sph::ro<sph::particle_kind> kind, sph::ro<double> rho, sph::rw<double> u) {
-  flecsi_lite::forall(u.size(), [&](std::size_t p) {
-    if (kind(p) == sph::particle_kind::fluid) u(p) = K * rho(p);  // K rho^(Gamma - 1) / (Gamma - 1), Gamma = 2
-  }, "bns::polytrope_energy");
+  flecsi_lite::forall(
+    u.size(),
+    [&](std::size_t p) {
+      if (kind(p) == sph::particle_kind::fluid) u(p) = K * rho(p);  // K rho^(Gamma - 1) / (Gamma - 1), Gamma = 2
+    },
+    "bns::polytrope_energy");
 }
 
 void keep_on_polytrope(bns_run& s) {
@@ -104,10 +110,13 @@ void keep_on_polytrope(bns_run& s) {
 
 void corotate(double omega, sph::ro<sph::particle_kind> kind, sph::ro<vec> x, sph::ro<vec> extra, sph::wo<vec> v,
               sph::rw<vec> a) {
-  flecsi_lite::forall(x.size(), [&](std::size_t p) {
-    v(p) = kind(p) == sph::particle_kind::fluid ? vec{-omega * x(p)[1], omega * x(p)[0], 0.0} : vec{};
-    for (int k = 0; k < 3; ++k) a(p)[k] -= extra(p)[k];
-  }, "bns::corotate");
+  flecsi_lite::forall(
+    x.size(),
+    [&](std::size_t p) {
+      v(p) = kind(p) == sph::particle_kind::fluid ? vec{-omega * x(p)[1], omega * x(p)[0], 0.0} : vec{};
+      for (int k = 0; k < 3; ++k) a(p)[k] -= extra(p)[k];
+    },
+    "bns::corotate");
 }
 
 /// After a step of the relaxation: ends it once K / |W| < relaxation_tolerance (after
@@ -148,8 +157,8 @@ std::vector<sph::statistics_column> extra_columns(const bns_run& s) {
   const int stars = s.problem.kind == bns::setup::binary ? 2 : 1;
   for (int star = 1; star <= stars; ++star)
     for (const char* axis : {"x", "y", "z"})
-      add("star" + std::to_string(star) + "_" + axis, "centre of mass of star " + std::to_string(star) +
-          " (its particles at the start: ids)", "L");
+      add("star" + std::to_string(star) + "_" + axis,
+          "centre of mass of star " + std::to_string(star) + " (its particles at the start: ids)", "L");
   if (stars == 2) {
     add("separation", "distance of the stars' centres of mass", "L");
     add("orbital_phase", "atan2 of the separation vector's y and x (star 2 - star 1), in (-pi, pi]", "1");
@@ -168,7 +177,8 @@ std::vector<double> extra_values(bns_run& s) {
   const auto stars = bns::measure_stars(s, s.first_star_end);
   std::vector<double> values;
   const int count = s.problem.kind == bns::setup::binary ? 2 : 1;
-  for (int star = 0; star < count; ++star) values.insert(values.end(), stars.centre[star].begin(), stars.centre[star].end());
+  for (int star = 0; star < count; ++star)
+    values.insert(values.end(), stars.centre[star].begin(), stars.centre[star].end());
   if (count == 2) {
     const double dx = stars.centre[1][0] - stars.centre[0][0], dy = stars.centre[1][1] - stars.centre[0][1],
                  dz = stars.centre[1][2] - stars.centre[0][2];
@@ -178,8 +188,8 @@ std::vector<double> extra_values(bns_run& s) {
     const auto profile = bns::measure_profile(s, s.problem, stars.centre[0]);
     values.insert(values.end(), {profile.half_mass_radius, profile.radius_90, profile.density_error});
   }
-  const auto h = flecsph::physics::strain_on_z_axis(stars.rate, s.G, s.problem.speed_of_light,
-                                                    s.problem.observer_distance);
+  const auto h =
+    flecsph::physics::strain_on_z_axis(stars.rate, s.G, s.problem.speed_of_light, s.problem.observer_distance);
   values.insert(values.end(), {h.plus, h.cross, s.relaxing ? 1.0 : 0.0});
   return values;
 }
@@ -195,12 +205,13 @@ void monitor(bns_run& s) {
       s.radius_50 = profile.half_mass_radius, s.radius_90 = profile.radius_90;
       s.first_density_error = profile.density_error;
     }
-    s.largest_radius_drift = std::max({s.largest_radius_drift, drift(profile.half_mass_radius, s.radius_50),
-                                       drift(profile.radius_90, s.radius_90)});
+    s.largest_radius_drift = std::max(
+      {s.largest_radius_drift, drift(profile.half_mass_radius, s.radius_50), drift(profile.radius_90, s.radius_90)});
     s.last_density_error = profile.density_error;
   } else {
     double d2 = 0;
-    for (int k = 0; k < 3; ++k) d2 += (stars.centre[1][k] - stars.centre[0][k]) * (stars.centre[1][k] - stars.centre[0][k]);
+    for (int k = 0; k < 3; ++k)
+      d2 += (stars.centre[1][k] - stars.centre[0][k]) * (stars.centre[1][k] - stars.centre[0][k]);
     const double lz = sph::measure_conserved(s).angular_momentum[2];
     if (!s.monitoring) s.first_separation = std::sqrt(d2), s.first_lz = lz;
     s.last_separation = std::sqrt(d2);
@@ -213,19 +224,19 @@ void monitor(bns_run& s) {
 
 void report(bns_run& s) {
   std::ostringstream line;
-  line << std::setprecision(5) << "bns: t = " << s.time << " = " << s.time / s.dynamical_time << " t_dyn (t_dyn = "
-       << s.dynamical_time << ", K = " << s.K << ")";
-  if (!s.monitoring) line << "; still relaxing";
+  line << std::setprecision(5) << "bns: t = " << s.time << " = " << s.time / s.dynamical_time
+       << " t_dyn (t_dyn = " << s.dynamical_time << ", K = " << s.K << ")";
+  if (!s.monitoring)
+    line << "; still relaxing";
   else if (s.problem.kind == bns::setup::star)
-    line << "; from t = " << s.monitored_from << ": half-mass radius " << s.radius_50 << ", 90% radius "
-         << s.radius_90 << ", largest radius drift " << s.largest_radius_drift
+    line << "; from t = " << s.monitored_from << ": half-mass radius " << s.radius_50 << ", 90% radius " << s.radius_90
+         << ", largest radius drift " << s.largest_radius_drift
          << "; mean |rho - rho_LE| / rho_c inside 0.9 R: " << s.first_density_error << " at the start, "
          << s.last_density_error << " at the end";
   else
     line << "; from t = " << s.monitored_from << " (" << (s.time - s.monitored_from) * s.omega / (2 * std::acos(-1.0))
-         << " orbits): separation " << s.first_separation << " -> " << s.last_separation
-         << ", largest |a / a0 - 1| " << s.largest_separation_drift << ", largest |Lz / Lz0 - 1| "
-         << s.largest_lz_drift;
+         << " orbits): separation " << s.first_separation << " -> " << s.last_separation << ", largest |a / a0 - 1| "
+         << s.largest_separation_drift << ", largest |Lz / Lz0 - 1| " << s.largest_lz_drift;
   log::info() << line.str();
 }
 
@@ -233,7 +244,8 @@ std::vector<double> bounds(const runtime::options& opts, const std::string& name
   std::vector<double> values;
   std::istringstream in(opts.get(name));
   for (std::string item; std::getline(in, item, ',');) values.push_back(std::stod(item));
-  if (values.size() != 2) throw runtime::parameter_error("--" + name + " takes two bounds A,B, not '" + opts.get(name) + "'");
+  if (values.size() != 2)
+    throw runtime::parameter_error("--" + name + " takes two bounds A,B, not '" + opts.get(name) + "'");
   return values;
 }
 
@@ -242,17 +254,19 @@ int check(const bns_run& s, const runtime::options& opts) {
   bool pass = true;
   if (opts.has("check-equilibrium")) {
     const auto b = bounds(opts, "check-equilibrium");
-    const bool ok = s.monitoring && s.first_density_error <= b[0] && s.last_density_error <= b[0] &&
-                    s.largest_radius_drift <= b[1];
-    if (!ok) log::error() << "bns: check failed: density error " << s.first_density_error << ", " << s.last_density_error
-                          << " (bound " << b[0] << "), radius drift " << s.largest_radius_drift << " (bound " << b[1] << ")";
+    const bool ok =
+      s.monitoring && s.first_density_error <= b[0] && s.last_density_error <= b[0] && s.largest_radius_drift <= b[1];
+    if (!ok)
+      log::error() << "bns: check failed: density error " << s.first_density_error << ", " << s.last_density_error
+                   << " (bound " << b[0] << "), radius drift " << s.largest_radius_drift << " (bound " << b[1] << ")";
     pass = pass && ok;
   }
   if (opts.has("check-orbit")) {
     const auto b = bounds(opts, "check-orbit");
     const bool ok = s.monitoring && s.largest_separation_drift <= b[0] && s.largest_lz_drift <= b[1];
-    if (!ok) log::error() << "bns: check failed: separation drift " << s.largest_separation_drift << " (bound " << b[0]
-                          << "), angular momentum drift " << s.largest_lz_drift << " (bound " << b[1] << ")";
+    if (!ok)
+      log::error() << "bns: check failed: separation drift " << s.largest_separation_drift << " (bound " << b[0]
+                   << "), angular momentum drift " << s.largest_lz_drift << " (bound " << b[1] << ")";
     pass = pass && ok;
   }
   return pass ? 0 : 1;
@@ -270,11 +284,11 @@ int run(const app::run_context& context) {
   s.omega = s.problem.kind == bns::setup::binary ? bns::kepler_omega(s.problem, s.G) : 0.0;
   s.relaxing = s.problem.relaxation_time > 0 && s.files.restart_file.empty();
   if (s.relaxing && s.physics.individual_time_steps())
-    throw runtime::parameter_error("bns: time_steps = individual with relaxation_time = " +
-                                   std::to_string(s.problem.relaxation_time) +
-                                   ": the relaxation damps every particle's velocity in every step, which "
-                                   "individual steps do not take; relax with time_steps = global, or set "
-                                   "relaxation_time = 0");
+    throw runtime::parameter_error(
+      "bns: time_steps = individual with relaxation_time = " + std::to_string(s.problem.relaxation_time) +
+      ": the relaxation damps every particle's velocity in every step, which "
+      "individual steps do not take; relax with time_steps = global, or set "
+      "relaxation_time = 0");
   s.description = {{"star_mass", s.problem.mass},
                    {"star_radius", s.problem.radius},
                    {"polytropic_constant", s.K},
@@ -282,35 +296,41 @@ int run(const app::run_context& context) {
                    {"dynamical_time", s.dynamical_time}};
   s.extra_statistics_columns = extra_columns(s);
   s.extra_statistics = [&s] { return extra_values(s); };
-  auto m = sph::make_app_control_model<bns_run>(
-    {[](bns_run&) {},
-     [](bns_run& state) {
-       if (state.problem.kind == bns::setup::star) bns::create_star(state, state.problem);
-       else bns::create_binary(state, state.problem);
-     }});
+  auto m = sph::make_app_control_model<bns_run>({[](bns_run&) {},
+                                                 [](bns_run& state) {
+                                                   if (state.problem.kind == bns::setup::star)
+                                                     bns::create_star(state, state.problem);
+                                                   else
+                                                     bns::create_binary(state, state.problem);
+                                                 }});
   // Star membership by id: the binary's first star holds the star file's particles.
-  m.action("initial_data", "membership", [](bns_run& state) {
-    state.first_star_end = state.problem.kind == bns::setup::binary ? bns::star_file_particles(state.problem)
-                                                                    : state.particles->global_size();
-  }).after("particles");
+  m.action("initial_data", "membership",
+           [](bns_run& state) {
+             state.first_star_end = state.problem.kind == bns::setup::binary ? bns::star_file_particles(state.problem)
+                                                                             : state.particles->global_size();
+           })
+    .after("particles");
   m.action("initialize", "polytrope", keep_on_polytrope).after("gravity");
   m.action("initialize", "relaxation", relaxation_forces).after("forces");
   m.action("advance", "relaxation", relaxation_forces).after("forces");
   m.action("advance", "polytrope", keep_on_polytrope).after("kick");
-  m.action("analyze", "relaxation_check", [](bns_run& state) {
-    relaxation_check(state);
-    monitor(state);
-  }).after("conserved_quantities");
+  m.action("analyze", "relaxation_check",
+           [](bns_run& state) {
+             relaxation_check(state);
+             monitor(state);
+           })
+    .after("conserved_quantities");
   m.action("initialize", "monitor", monitor).after("diagnostics");
   m.action("finalize", "report", report);
   return context.execute(m, s, [&context](const bns_run& state) { return check(state, context.options()); });
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   sph::app_definition definition;
   definition.program = "bns";
-  definition.summary = "Newtonian neutron stars (n = 1 polytropes) with SPH and self-gravity: a relaxed star, a binary.";
+  definition.summary =
+    "Newtonian neutron stars (n = 1 polytropes) with SPH and self-gravity: a relaxed star, a binary.";
   definition.declare_parameters = [](runtime::parameter_schema& schema) { bns::problem_parameters().declare(schema); };
   definition.physics_defaults.eos.type = flecsph::physics::eos_type::polytropic;
   definition.physics_defaults.eos.ideal.gamma = 2;

@@ -66,10 +66,10 @@ struct star_measures {
 inline star_measures measure_stars(sph::simulation<3>& s, std::uint64_t first_star_end) {
   using f = sph::fields<3>;
   auto& p = *s.particles;
-  const auto sums = flecsi_lite::reduce<sum_stars, star_sums_reduction>(first_star_end, f::id()(p), f::kind(p),
-                                                                       f::position()(p), f::velocity(p),
-                                                                       f::acceleration(p), f::mass()(p))
-                      .get();
+  const auto sums =
+    flecsi_lite::reduce<sum_stars, star_sums_reduction>(first_star_end, f::id()(p), f::kind(p), f::position()(p),
+                                                        f::velocity(p), f::acceleration(p), f::mass()(p))
+      .get();
   star_measures result;
   for (int star = 0; star < 2; ++star) {
     result.mass[star] = sums.mass[star].value();
@@ -108,8 +108,10 @@ inline profile_sums sum_profile(vec centre, double r_max, double mass, double ra
     if (kind(p) != sph::particle_kind::fluid) continue;
     const double r = spheres::radius({x(p)[0] - centre[0], x(p)[1] - centre[1], x(p)[2] - centre[2]});
     const auto bin = static_cast<long>(r / r_max * spheres::bin_count);
-    if (bin >= spheres::bin_count) sums.counts.outside += 1;
-    else sums.counts.mass[static_cast<std::size_t>(std::max(0L, bin))] += 1;
+    if (bin >= spheres::bin_count)
+      sums.counts.outside += 1;
+    else
+      sums.counts.mass[static_cast<std::size_t>(std::max(0L, bin))] += 1;
     if (r < 0.9 * radius) {
       sums.error.add(std::fabs(rho(p) - lane_emden_density(r, mass, radius)) / rho_c);
       ++sums.inside;
@@ -129,7 +131,7 @@ inline profile_measures measure_profile(sph::simulation<3>& s, const problem& pr
   auto& p = *s.particles;
   const double r_max = 2 * problem.radius;
   const auto sums = flecsi_lite::reduce<sum_profile, profile_reduction>(centre, r_max, problem.mass, problem.radius,
-                                                                       f::kind(p), f::position()(p), f::density(p))
+                                                                        f::kind(p), f::position()(p), f::density(p))
                       .get();
   profile_measures result;
   result.half_mass_radius = spheres::fraction_radius(sums.counts, r_max, 0.5);
@@ -138,4 +140,4 @@ inline profile_measures measure_profile(sph::simulation<3>& s, const problem& pr
   return result;
 }
 
-} // namespace bns
+}  // namespace bns

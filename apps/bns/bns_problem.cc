@@ -28,16 +28,14 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
   keys.choice("orbit_omega", &problem::orbit_omega, omega_rule_names(),
               "setup = binary: Omega of the corotating frame and the release (kepler, or forces: balancing the "
               "stars' mean accelerations)");
-  keys.real("relaxation_time", &problem::relaxation_time,
-            "longest damped relaxation, in units of t_dyn = sqrt(R^3 / (G M)) (0: none)")
+  keys
+    .real("relaxation_time", &problem::relaxation_time,
+          "longest damped relaxation, in units of t_dyn = sqrt(R^3 / (G M)) (0: none)")
     .at_least(0);
-  keys.real("relaxation_min_time", &problem::relaxation_min_time, "shortest relaxation, in units of t_dyn")
-    .at_least(0);
-  keys.real("relaxation_tolerance", &problem::relaxation_tolerance,
-            "the relaxation ends once K / |W| is below this")
+  keys.real("relaxation_min_time", &problem::relaxation_min_time, "shortest relaxation, in units of t_dyn").at_least(0);
+  keys.real("relaxation_tolerance", &problem::relaxation_tolerance, "the relaxation ends once K / |W| is below this")
     .greater_than(0);
-  keys.real("damping_time", &problem::damping_time, "relaxation damping a -= v / (damping_time t_dyn)")
-    .greater_than(0);
+  keys.real("damping_time", &problem::damping_time, "relaxation damping a -= v / (damping_time t_dyn)").greater_than(0);
   keys.real("observer_distance", &problem::observer_distance, "distance d of the strain's observer (z axis)")
     .greater_than(0);
   keys.real("speed_of_light", &problem::speed_of_light, "c of the strain, in code units").greater_than(0);
@@ -46,10 +44,11 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
 
 /// sin(x) / x, 1 at x = 0.
 double sinc(double x) { return std::fabs(x) < 1e-8 ? 1 - x * x / 6 : std::sin(x) / x; }
-} // namespace
+}  // namespace
 
 const flecsi_lite::runtime::name_table<setup>& setup_names() {
-  static const flecsi_lite::runtime::name_table<setup> table{"setup", {{"star", setup::star}, {"binary", setup::binary}}};
+  static const flecsi_lite::runtime::name_table<setup> table{"setup",
+                                                             {{"star", setup::star}, {"binary", setup::binary}}};
   return table;
 }
 
@@ -111,8 +110,9 @@ void check_problem(const problem& problem, const sph::physics_settings& physics,
   m.precision(6);
   if (!physics.gravity.enabled) throw parameter_error("bns: the stars need self-gravity: set gravity = true");
   if (polytropic_constant_set)
-    throw parameter_error("bns: polytropic_constant follows from star_radius and gravitational_constant "
-                          "(n = 1: K = 2 G R^2 / pi); do not set it");
+    throw parameter_error(
+      "bns: polytropic_constant follows from star_radius and gravitational_constant "
+      "(n = 1: K = 2 G R^2 / pi); do not set it");
   if (physics.eos.type == flecsph::physics::eos_type::polytropic && physics.eos.polytrope.polytropic_exponent != 2) {
     m << "bns: polytropic_exponent = " << physics.eos.polytrope.polytropic_exponent
       << ": the stars are n = 1 polytropes, Gamma = 2";
@@ -194,7 +194,8 @@ void create_binary(sph::simulation<3>& s, const problem& problem) {
   // Every rank reads the whole star (a few thousand particles), in id order.
   const flecsi_lite::io::slice all{0, n};
   const auto read = [&](const char* name) { return in.read<double>(step, name, all); };
-  const auto x = read("x"), y = read("y"), z = read("z"), m = read("m"), h = read("h"), u = read("u"), rho = read("rho");
+  const auto x = read("x"), y = read("y"), z = read("z"), m = read("m"), h = read("h"), u = read("u"),
+             rho = read("rho");
   const auto id = in.read<std::uint64_t>(step, "id", all);
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -227,4 +228,4 @@ void create_binary(sph::simulation<3>& s, const problem& problem) {
   });
 }
 
-} // namespace bns
+}  // namespace bns

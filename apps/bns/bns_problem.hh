@@ -83,4 +83,4 @@ std::uint64_t star_file_particles(const problem& problem);
 /// the second (ids N .. 2N-1) at x = a M1 / M, at rest; u, h and rho scaled with them.
 void create_binary(sph::simulation<3>& s, const problem& problem);
 
-} // namespace bns
+}  // namespace bns

@@ -23,8 +23,8 @@ struct cold_collapse_run : sph::app_state<3> {
   cold_collapse::problem problem;
   double gravitational_constant = 1;
   double free_fall_time = 0;
-  double initial_radius = 0;    ///< of the generated sphere, holding radius_mass_fraction of the mass
-  double largest_error = 0;     ///< max over the compared steps of |r / (r0 x(t)) - 1|
+  double initial_radius = 0;  ///< of the generated sphere, holding radius_mass_fraction of the mass
+  double largest_error = 0;   ///< max over the compared steps of |r / (r0 x(t)) - 1|
   double largest_error_time = 0;
   double last_radius = 0, last_time = 0;  ///< the last compared step
   double last_expected = 0;
@@ -71,11 +71,12 @@ int check(const cold_collapse_run& s, const runtime::options& opts) {
                        s.time >= s.problem.compare_until * s.free_fall_time;
   const bool pass = reached && s.largest_error <= bound;
   if (!reached)
-    log::error() << "cold_collapse: check failed: the run ended at t = " << s.time << " before compare_until = "
-                 << s.problem.compare_until << " t_ff = " << s.problem.compare_until * s.free_fall_time;
+    log::error() << "cold_collapse: check failed: the run ended at t = " << s.time
+                 << " before compare_until = " << s.problem.compare_until
+                 << " t_ff = " << s.problem.compare_until * s.free_fall_time;
   else if (!pass)
-    log::error() << "cold_collapse: check failed: |r / r_free_fall - 1| reached " << s.largest_error << " at t = "
-                 << s.largest_error_time << " (bound " << bound << ")";
+    log::error() << "cold_collapse: check failed: |r / r_free_fall - 1| reached " << s.largest_error
+                 << " at t = " << s.largest_error_time << " (bound " << bound << ")";
   return pass ? 0 : 1;
 }
 
@@ -96,15 +97,17 @@ int run(const app::run_context& context) {
      [](cold_collapse_run& state) {
        cold_collapse::create_sphere(state, state.problem, state.gravitational_constant);
      }});
-  m.action("initialize", "initial_radius", [](cold_collapse_run& state) {
-    initial_radius(state);
-    compare_radius(state);
-  }).after("diagnostics");
+  m.action("initialize", "initial_radius",
+           [](cold_collapse_run& state) {
+             initial_radius(state);
+             compare_radius(state);
+           })
+    .after("diagnostics");
   m.action("analyze", "radius_check", compare_radius).after("conserved_quantities");
   m.action("finalize", "report", report);
   return context.execute(m, s, [&context](const cold_collapse_run& state) { return check(state, context.options()); });
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   sph::app_definition definition;

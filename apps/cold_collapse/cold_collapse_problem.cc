@@ -14,17 +14,19 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
   sphere.real("sphere_mass", &problem::mass, "mass M of the sphere").greater_than(0);
   sphere.real("thermal_energy", &problem::thermal_energy, "specific internal energy in units of G M / R (tiny: cold)")
     .greater_than(0);
-  sphere.real("radius_mass_fraction", &problem::mass_fraction,
-              "the radius compared with free fall holds this fraction of the mass")
+  sphere
+    .real("radius_mass_fraction", &problem::mass_fraction,
+          "the radius compared with free fall holds this fraction of the mass")
     .greater_than(0)
     .at_most(1);
-  sphere.real("compare_until", &problem::compare_until,
-              "compare the radius with free fall up to this fraction of the free-fall time")
+  sphere
+    .real("compare_until", &problem::compare_until,
+          "compare the radius with free fall up to this fraction of the free-fall time")
     .greater_than(0)
     .at_most(1);
   return sphere;
 }
-} // namespace
+}  // namespace
 
 const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
   static const auto block = declare_problem();
@@ -35,8 +37,8 @@ void check_problem(const problem& problem, const sph::physics_settings& physics,
   const std::string keys = "particles, sphere_radius";
   sph::checked_count("cold_collapse", "particles", double(problem.particles), "particles");
   const double radius = sph::checked_length("cold_collapse", "sphere radius", problem.radius, "sphere_radius");
-  const double spacing = sph::checked_length("cold_collapse", "mean spacing",
-                                             radius * std::cbrt(4.0 / double(problem.particles)), keys);
+  const double spacing =
+    sph::checked_length("cold_collapse", "mean spacing", radius * std::cbrt(4.0 / double(problem.particles)), keys);
   sph::checked_length("cold_collapse", "smoothing length", physics.eta * spacing, "eta, " + keys);
   sph::checked_positive("cold_collapse", "particle mass", problem.mass / double(problem.particles),
                         "sphere_mass, particles");
@@ -65,4 +67,4 @@ double free_fall_radius(double tau) {
   return 0.5 * (lo + hi);
 }
 
-} // namespace cold_collapse
+}  // namespace cold_collapse

@@ -46,7 +46,8 @@ void create_sphere(sph::simulation<D>& s, const problem& problem, double gravita
   static_assert(D == 3, "the collapsing sphere is three-dimensional");
   check_problem(problem, s.physics, gravitational_constant);
   const auto sites = spheres::ball_lattice(problem.particles);
-  const auto block = flecsi_lite::io::block_slice(sites.size(), flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
+  const auto block =
+    flecsi_lite::io::block_slice(sites.size(), flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
   sph::create_particles(s, block.count);
   const double pi = std::acos(-1.0);
   const double mass = problem.mass / double(sites.size());
@@ -64,4 +65,4 @@ void create_sphere(sph::simulation<D>& s, const problem& problem, double gravita
   });
 }
 
-} // namespace cold_collapse
+}  // namespace cold_collapse

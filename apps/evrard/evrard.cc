@@ -41,10 +41,11 @@ void report(evrard_run& s) {
   const auto analytic = evrard::analytic_energies(s.problem, s.gravitational_constant);
   std::ostringstream line;
   line << std::setprecision(6) << "evrard: t = " << s.time << ": K = " << s.totals.kinetic
-       << ", U = " << s.totals.internal << ", W = " << s.totals.potential << ", E = " << s.totals.total << "; E0 = " << s.initial_totals.total
-       << " (W0 = " << s.initial_totals.potential << "; continuous sphere: W0 = " << analytic.potential
-       << ", E0 = " << analytic.total() << "); largest |E - E0| / |E0| = " << std::scientific
-       << std::setprecision(3) << s.largest_energy_error << " at t = " << std::defaultfloat << s.largest_error_time;
+       << ", U = " << s.totals.internal << ", W = " << s.totals.potential << ", E = " << s.totals.total
+       << "; E0 = " << s.initial_totals.total << " (W0 = " << s.initial_totals.potential
+       << "; continuous sphere: W0 = " << analytic.potential << ", E0 = " << analytic.total()
+       << "); largest |E - E0| / |E0| = " << std::scientific << std::setprecision(3) << s.largest_energy_error
+       << " at t = " << std::defaultfloat << s.largest_error_time;
   log::info() << line.str();
 }
 
@@ -54,8 +55,8 @@ int check(const evrard_run& s, const runtime::options& opts) {
   const double bound = std::stod(opts.get("check-energy"));
   const bool pass = s.largest_energy_error <= bound;
   if (!pass)
-    log::error() << "evrard: check failed: |E - E0| / |E0| reached " << s.largest_energy_error << " at t = "
-                 << s.largest_error_time << " (bound " << bound << ")";
+    log::error() << "evrard: check failed: |E - E0| / |E0| reached " << s.largest_energy_error
+                 << " at t = " << s.largest_error_time << " (bound " << bound << ")";
   return pass ? 0 : 1;
 }
 
@@ -78,14 +79,17 @@ int run(const app::run_context& context) {
   m.action("finalize", "report", report);
   return context.execute(m, s, [&context](const evrard_run& state) { return check(state, context.options()); });
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   sph::app_definition definition;
   definition.program = "evrard";
-  definition.summary = "The Evrard collapse with SPH and self-gravity: H5Part output, energies K, U, W, E per step "
-                       "and their conservation.";
-  definition.declare_parameters = [](runtime::parameter_schema& schema) { evrard::problem_parameters().declare(schema); };
+  definition.summary =
+    "The Evrard collapse with SPH and self-gravity: H5Part output, energies K, U, W, E per step "
+    "and their conservation.";
+  definition.declare_parameters = [](runtime::parameter_schema& schema) {
+    evrard::problem_parameters().declare(schema);
+  };
   // Without a parameter file: the problem of apps/evrard/evrard.par (validation.defaults.evrard).
   definition.physics_defaults.eos.ideal.gamma = 5.0 / 3.0;
   definition.physics_defaults.conductivity = 0;

@@ -16,7 +16,7 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
     .greater_than(0);
   return sphere;
 }
-} // namespace
+}  // namespace
 
 const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
   static const auto block = declare_problem();
@@ -42,4 +42,4 @@ initial_energies analytic_energies(const problem& problem, double gravitational_
           problem.thermal_energy * g * problem.mass / problem.radius * problem.mass};
 }
 
-} // namespace evrard
+}  // namespace evrard

@@ -48,7 +48,8 @@ void create_sphere(sph::simulation<D>& s, const problem& problem, double gravita
   static_assert(D == 3, "the Evrard sphere is three-dimensional");
   check_problem(problem, s.physics, gravitational_constant);
   const auto sites = spheres::ball_lattice(problem.particles);
-  const auto block = flecsi_lite::io::block_slice(sites.size(), flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
+  const auto block =
+    flecsi_lite::io::block_slice(sites.size(), flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
   sph::create_particles(s, block.count);
   const double pi = std::acos(-1.0);
   const double mass = problem.mass / double(sites.size());
@@ -68,4 +69,4 @@ void create_sphere(sph::simulation<D>& s, const problem& problem, double gravita
   });
 }
 
-} // namespace evrard
+}  // namespace evrard

@@ -20,9 +20,8 @@ using flecsi_lite::runtime::options;
 using flecsi_lite::runtime::options_error;
 namespace analytic = flecsph::analytic;
 
-const std::set<std::string> sod_options = {"rho-left", "v-left",  "p-left", "rho-right",
-                                           "v-right",  "p-right", "x0",     "xmin",
-                                           "xmax",     "x-file"};
+const std::set<std::string> sod_options = {"rho-left", "v-left", "p-left", "rho-right", "v-right",
+                                           "p-right",  "x0",     "xmin",   "xmax",      "x-file"};
 const std::set<std::string> sedov_options = {"dim", "energy", "rho0", "rmax", "shock"};
 
 options command_line() {
@@ -74,8 +73,7 @@ bool parse_finite(const std::string& text, double& value) {
 double number(const options& parser, const std::string& name) {
   const std::string text = parser.get(name);
   double value = 0.0;
-  if (!parse_finite(text, value))
-    throw options_error("--" + name + " needs a finite number, not '" + text + "'");
+  if (!parse_finite(text, value)) throw options_error("--" + name + " needs a finite number, not '" + text + "'");
   return value;
 }
 
@@ -88,8 +86,7 @@ int integer(const options& parser, const std::string& name) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (text.empty() || used != text.size())
-    throw options_error("--" + name + " needs an integer, not '" + text + "'");
+  if (text.empty() || used != text.size()) throw options_error("--" + name + " needs an integer, not '" + text + "'");
   return value;
 }
 
@@ -102,8 +99,7 @@ void write_sod(const options& parser, std::ostream& out) {
   if (t < 0.0) throw options_error("--t must be >= 0");
   if (points < 2) throw options_error("--points must be at least 2");
   if (!(xmax > xmin)) throw options_error("--xmax must be larger than --xmin");
-  const analytic::riemann_state left{number(parser, "rho-left"), number(parser, "v-left"),
-                                     number(parser, "p-left")};
+  const analytic::riemann_state left{number(parser, "rho-left"), number(parser, "v-left"), number(parser, "p-left")};
   const analytic::riemann_state right{number(parser, "rho-right"), number(parser, "v-right"),
                                       number(parser, "p-right")};
   const analytic::riemann_solution solution(left, right, gamma);
@@ -111,10 +107,8 @@ void write_sod(const options& parser, std::ostream& out) {
   out << "x,rho,v,P,u\n";
   const auto write = [&](double x) {
     // At t = 0 the initial data; the discontinuity itself belongs to the right state.
-    const analytic::riemann_state q =
-      t > 0.0 ? solution.at(x, t, x0) : (x < x0 ? left : right);
-    out << x << ',' << q.rho << ',' << q.v << ',' << q.P << ','
-        << analytic::specific_internal_energy(q, gamma) << '\n';
+    const analytic::riemann_state q = t > 0.0 ? solution.at(x, t, x0) : (x < x0 ? left : right);
+    out << x << ',' << q.rho << ',' << q.v << ',' << q.P << ',' << analytic::specific_internal_energy(q, gamma) << '\n';
   };
   if (parser.has("x-file")) {
     // The points of a caller that compares with particles (plot_sod.py's L1 errors): every value
@@ -139,12 +133,13 @@ void write_sedov(const options& parser, std::ostream& out) {
   const int points = integer(parser, "points");
   if (!(t > 0.0)) throw options_error("--t must be > 0 for sedov");
   if (points < 1) throw options_error("--points must be at least 1");
-  const analytic::sedov_taylor blast(integer(parser, "dim"), number(parser, "gamma"),
-                                     number(parser, "energy"), number(parser, "rho0"));
+  const analytic::sedov_taylor blast(integer(parser, "dim"), number(parser, "gamma"), number(parser, "energy"),
+                                     number(parser, "rho0"));
   if (parser.has("shock")) {
     const analytic::sedov_state q = blast.post_shock(t);
-    out << "t,R,rho,v,P\n" << std::setprecision(std::numeric_limits<double>::max_digits10) << t << ','
-        << blast.shock_radius(t) << ',' << q.rho << ',' << q.v << ',' << q.P << '\n';
+    out << "t,R,rho,v,P\n"
+        << std::setprecision(std::numeric_limits<double>::max_digits10) << t << ',' << blast.shock_radius(t) << ','
+        << q.rho << ',' << q.v << ',' << q.P << '\n';
     return;
   }
   const double rmax = parser.has("rmax") ? number(parser, "rmax") : 1.25 * blast.shock_radius(t);
@@ -154,12 +149,11 @@ void write_sedov(const options& parser, std::ostream& out) {
   for (int i = 0; i < points; ++i) {
     const double r = rmax * (i + 0.5) / points;
     const analytic::sedov_state q = blast.at(r, t);
-    out << r << ',' << q.rho << ',' << q.v << ',' << q.P << ','
-        << blast.specific_internal_energy(q) << '\n';
+    out << r << ',' << q.rho << ',' << q.v << ',' << q.P << ',' << blast.specific_internal_energy(q) << '\n';
   }
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   const std::string program = "exact_solution";
@@ -175,8 +169,7 @@ int main(int argc, char** argv) {
       throw options_error("unknown problem '" + problem + "'; choose sod or sedov");
     const auto& foreign = problem == "sod" ? sedov_options : sod_options;
     for (const auto& name : foreign)
-      if (parser.has(name))
-        throw options_error("option --" + name + " does not apply to " + problem);
+      if (parser.has(name)) throw options_error("option --" + name + " does not apply to " + problem);
 
     std::ofstream file;
     if (parser.has("output")) {
@@ -185,8 +178,10 @@ int main(int argc, char** argv) {
     }
     std::ostream& out = parser.has("output") ? file : std::cout;
     out << std::setprecision(12);
-    if (problem == "sod") write_sod(parser, out);
-    else write_sedov(parser, out);
+    if (problem == "sod")
+      write_sod(parser, out);
+    else
+      write_sedov(parser, out);
     out.flush();
     if (!out) throw std::runtime_error("writing the output failed");
   } catch (const options_error& error) {

@@ -44,7 +44,7 @@ struct fluid_run : fl::fluid_state<D> {
   fluid_app::problem problem;
   fluid_app::layout layout;
   std::vector<sample_row> series;
-  std::vector<double> check_times;        ///< channels: when the transient is compared
+  std::vector<double> check_times;                        ///< channels: when the transient is compared
   std::vector<std::pair<double, double>> channel_errors;  ///< (t, max |v - v_exact| / v_max)
   double min_x = std::numeric_limits<double>::max(), max_x = -std::numeric_limits<double>::max();
   double min_y = std::numeric_limits<double>::max();
@@ -83,7 +83,8 @@ double exact_velocity(const sample_input& in, double y) {
   const double nu = in.fluid.kinematic_viscosity();
   if (in.type == problem_type::poiseuille)
     return flecsph::analytic::poiseuille_velocity(y, in.time, in.length, in.fluid.body_force[0], nu);
-  if (in.type == problem_type::couette) return flecsph::analytic::couette_velocity(y, in.time, in.length, in.lid_velocity, nu);
+  if (in.type == problem_type::couette)
+    return flecsph::analytic::couette_velocity(y, in.time, in.length, in.lid_velocity, nu);
   return 0;
 }
 
@@ -119,7 +120,9 @@ sample measure_task(sample_input in, sph::ro<sph::vector<D>> x, sph::ro<sph::vec
 }
 
 template<int D>
-double channel_speed_scale(const fluid_run<D>& s) { return s.layout.speed_scale; }
+double channel_speed_scale(const fluid_run<D>& s) {
+  return s.layout.speed_scale;
+}
 
 template<int D>
 void measure(fluid_run<D>& s) {
@@ -127,7 +130,7 @@ void measure(fluid_run<D>& s) {
   auto& p = *s.particles;
   const sample_input in{s.problem.type, s.time, s.problem.length, s.layout.dx, s.problem.lid_velocity, s.fluid};
   const sample r = reduce<measure_task<D>, sample_reduction>(in, f::position()(p), f::velocity(p), f::mass()(p),
-                                                          f::density(p), f::pressure(p), f::kind(p))
+                                                             f::density(p), f::pressure(p), f::kind(p))
                      .get();
   const double error = r.channel_error / channel_speed_scale(s);
   s.series.push_back({s.time, r.front, r.energy.value(), r.density_deviation, r.speed, error});
@@ -240,24 +243,24 @@ void report(fluid_run<D>& s) {
        << ", largest |rho/rho0 - 1| " << largest_density_deviation(s) << ", largest speed " << s.series.back().speed;
   const double g = std::fabs(s.fluid.body_force[1]);
   switch (s.problem.type) {
-  case problem_type::still_tank:
-    line << " = " << s.series.back().speed / std::sqrt(g * s.problem.length) << " sqrt(g H); bottom pressure "
-         << s.bottom_pressure << " = " << s.bottom_pressure / (s.fluid.eos.reference_density * g * s.problem.length)
-         << " rho0 g H; fluid within x [" << s.min_x << ", " << s.max_x << "], y >= " << s.min_y;
-    break;
-  case problem_type::poiseuille:
-  case problem_type::couette:
-    for (const auto& [t, e] : s.channel_errors)
-      line << "; at t = " << t << " (" << t * s.fluid.kinematic_viscosity() / (s.problem.length * s.problem.length)
-           << " L^2/nu) max |v - v_exact| = " << e << " v_max";
-    break;
-  case problem_type::dam_break: {
-    const auto r = dam_break_errors(s);
-    line << "; front against Martin & Moyce (1952) over 1 <= T <= 2.8 (" << r.points << " points): mean relative error "
-         << r.mean_error << ", largest " << r.max_error << "; largest rise of the mechanical energy " << r.largest_rise
-         << " |E0|";
-    break;
-  }
+    case problem_type::still_tank:
+      line << " = " << s.series.back().speed / std::sqrt(g * s.problem.length) << " sqrt(g H); bottom pressure "
+           << s.bottom_pressure << " = " << s.bottom_pressure / (s.fluid.eos.reference_density * g * s.problem.length)
+           << " rho0 g H; fluid within x [" << s.min_x << ", " << s.max_x << "], y >= " << s.min_y;
+      break;
+    case problem_type::poiseuille:
+    case problem_type::couette:
+      for (const auto& [t, e] : s.channel_errors)
+        line << "; at t = " << t << " (" << t * s.fluid.kinematic_viscosity() / (s.problem.length * s.problem.length)
+             << " L^2/nu) max |v - v_exact| = " << e << " v_max";
+      break;
+    case problem_type::dam_break: {
+      const auto r = dam_break_errors(s);
+      line << "; front against Martin & Moyce (1952) over 1 <= T <= 2.8 (" << r.points
+           << " points): mean relative error " << r.mean_error << ", largest " << r.max_error
+           << "; largest rise of the mechanical energy " << r.largest_rise << " |E0|";
+      break;
+    }
   }
   log::info() << line.str();
   if (runtime::rank() != 0 || s.files.output_file.empty()) return;
@@ -310,15 +313,16 @@ int check(const fluid_run<D>& s, const runtime::options& opts) {
     for (std::size_t i = 0; i < s.channel_errors.size(); ++i) {
       const bool last = i + 1 == s.channel_errors.size();
       if (!(s.channel_errors[i].second <= (last ? b[0] : b[1])))
-        fail("max |v - v_exact| = " + std::to_string(s.channel_errors[i].second) + " v_max at t = " +
-             std::to_string(s.channel_errors[i].first));
+        fail("max |v - v_exact| = " + std::to_string(s.channel_errors[i].second) +
+             " v_max at t = " + std::to_string(s.channel_errors[i].first));
     }
   }
   if (opts.has("check-dam-break")) {
     const auto b = bounds(opts, "check-dam-break", 3);  // front, density, energy rise
     const auto r = dam_break_errors(s);
     if (r.points == 0 || !(r.mean_error <= b[0])) fail("mean front error " + std::to_string(r.mean_error));
-    if (!(largest_density_deviation(s) <= b[1])) fail("|rho/rho0 - 1| reached " + std::to_string(largest_density_deviation(s)));
+    if (!(largest_density_deviation(s) <= b[1]))
+      fail("|rho/rho0 - 1| reached " + std::to_string(largest_density_deviation(s)));
     if (!(r.largest_rise <= b[2])) fail("the mechanical energy rose by " + std::to_string(r.largest_rise) + " |E0|");
   }
   return pass ? 0 : 1;
@@ -333,9 +337,10 @@ int run(const app::run_context& context) {
   if (s.physics.adaptive_smoothing_length)
     throw runtime::parameter_error("fluid: adaptive_smoothing_length = true: the liquid keeps h = h_factor dx");
   if (s.physics.individual_time_steps())
-    throw runtime::parameter_error("fluid: time_steps = individual is not supported (the weakly compressible "
-                                   "liquid's steps are all set by its sound speed c0, so one step for all loses "
-                                   "nothing): use time_steps = global");
+    throw runtime::parameter_error(
+      "fluid: time_steps = individual is not supported (the weakly compressible "
+      "liquid's steps are all set by its sound speed c0, so one step for all loses "
+      "nothing): use time_steps = global");
   // A checkpoint holds drho/dt and the walls' own velocity (fluid_fields.hh); initial data would not.
   if (!s.files.initial_data.empty())
     throw runtime::parameter_error("fluid: initial_data = '" + s.files.initial_data +
@@ -356,15 +361,18 @@ int run(const app::run_context& context) {
         << ", exponent " << s.fluid.eos.exponent << ")";
     s.equation_of_state = eos.str();
   }
-  s.description = {{"length", s.problem.length}, {"dx", s.layout.dx}, {"rho0", s.fluid.eos.reference_density},
-                   {"c0", s.fluid.eos.reference_sound_speed}, {"gravity", s.fluid.body_force[1]}};
+  s.description = {{"length", s.problem.length},
+                   {"dx", s.layout.dx},
+                   {"rho0", s.fluid.eos.reference_density},
+                   {"c0", s.fluid.eos.reference_sound_speed},
+                   {"gravity", s.fluid.body_force[1]}};
   auto m = fl::make_fluid_control_model<fluid_run<D>>({set_domain<D>, create<D>});
   m.action("initialize", "measure", measure<D>).after("diagnostics");
   m.action("analyze", "measure", measure<D>).after("conserved_quantities");
   m.action("finalize", "report", report<D>);
   return context.execute(m, s, [&context](const fluid_run<D>& state) { return check(state, context.options()); });
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   sph::app_definition definition;
@@ -384,7 +392,8 @@ int main(int argc, char** argv) {
   definition.file_defaults.output_every = 0.1;
   definition.file_defaults.checkpoint_file = "none";
   definition.declare_options = [](runtime::options& options) {
-    options.value("check-still-tank", "V,P", "exit 1 unless max speed <= V sqrt(g H) and |P_bottom / rho0 g H - 1| <= P")
+    options
+      .value("check-still-tank", "V,P", "exit 1 unless max speed <= V sqrt(g H) and |P_bottom / rho0 g H - 1| <= P")
       .value("check-channel", "STEADY,TRANSIENT", "exit 1 unless max |v - v_exact| / v_max is within the bounds")
       .value("check-dam-break", "FRONT,RHO,RISE",
              "exit 1 unless the mean front error, max |rho/rho0 - 1| and the energy rise / |E0| are within them");

@@ -30,8 +30,7 @@ rt::parameter_block<problem> declare() {
     .greater_than(0)
     .at_most(1e10);
   p.real("h_factor", &problem::h_factor, "h = h_factor dx").range(0.5, 3);
-  p.integer("wall_layers", &problem::wall_layers, "wall particle layers (0: enough for the support 2 h)")
-    .range(0, 100);
+  p.integer("wall_layers", &problem::wall_layers, "wall particle layers (0: enough for the support 2 h)").range(0, 100);
   p.real("lid_velocity", &problem::lid_velocity, "couette: velocity of the lid").range(-1e10, 1e10);
   p.real("channel_length", &problem::channel_length, "channels: period along x (0: L / 2)").range(0, 1e10);
   p.real("tank_width", &problem::tank_width, "still tank: width (0: 2 H)").range(0, 1e10);
@@ -47,7 +46,7 @@ std::string text(double value) {
   s << value;
   return s.str();
 }
-} // namespace
+}  // namespace
 
 const rt::parameter_block<problem>& problem_parameters() {
   static const auto block = declare();
@@ -65,9 +64,9 @@ layout layout_of(const std::string& program, const problem& p, flecsph::fluid::f
   l.layers = p.wall_layers ? p.wall_layers : needed;
   if (double(l.layers) * l.dx < support - 1e-12 * l.dx)
     throw rt::parameter_error(program + ": wall_layers = " + std::to_string(l.layers) + " (" +
-                              text(double(l.layers) * l.dx) + " thick) is thinner than the kernel support 2 h = " +
-                              text(support) + " (h_factor = " + text(p.h_factor) + "): at least " +
-                              std::to_string(needed) + " layers");
+                              text(double(l.layers) * l.dx) +
+                              " thick) is thinner than the kernel support 2 h = " + text(support) +
+                              " (h_factor = " + text(p.h_factor) + "): at least " + std::to_string(needed) + " layers");
   if (p.dimension == 3 && p.type != problem_type::dam_break)
     throw rt::parameter_error(program + ": dimension = 3 is for problem = dam_break only, not " +
                               problem_names().name(p.type));
@@ -75,48 +74,49 @@ layout layout_of(const std::string& program, const problem& p, flecsph::fluid::f
                              fluid.body_force[2] * fluid.body_force[2]);
   const double nu = fluid.kinematic_viscosity();
   switch (p.type) {
-  case problem_type::still_tank: {
-    const double width = p.tank_width > 0 ? p.tank_width : 2 * L;
-    l.fluid_lo = {p.column_offset, 0}, l.fluid_hi = {p.column_offset + width, L};
-    l.tank_lo = {0, 0}, l.tank_hi = {width, 1.5 * L};
-    l.speed_scale = std::sqrt(g * L);
-    break;
-  }
-  case problem_type::dam_break:
-    l.fluid_lo = {p.column_offset, 0}, l.fluid_hi = {p.column_offset + L, 2 * L};
-    l.tank_lo = {0, 0}, l.tank_hi = {4 * L, 3 * L};
-    l.speed_scale = std::sqrt(2 * g * 2 * L);  // the front's speed, sqrt(2 g H) with H = 2 L
-    if (p.dimension == 3) {
-      // A whole number of spacings, so that the periodic lattice is uniform; the search needs
-      // a period above twice the interaction radius 2 h (ntree periodic reach).
-      const auto layers_z = std::max<std::int64_t>(1, std::llround((p.span > 0 ? p.span : 7 * l.dx) / l.dx));
-      l.tank_hi[2] = l.fluid_hi[2] = double(layers_z) * l.dx;
-      if (!(l.tank_hi[2] > 2 * support * (1 + 1e-9)))
-        throw rt::parameter_error(program + ": span = " + text(p.span) + " (" + std::to_string(layers_z) +
-                                  " spacings) is not wider than twice the kernel support 2 (2 h) = " +
-                                  text(2 * support) + ": the periodic images would overlap");
+    case problem_type::still_tank: {
+      const double width = p.tank_width > 0 ? p.tank_width : 2 * L;
+      l.fluid_lo = {p.column_offset, 0}, l.fluid_hi = {p.column_offset + width, L};
+      l.tank_lo = {0, 0}, l.tank_hi = {width, 1.5 * L};
+      l.speed_scale = std::sqrt(g * L);
+      break;
     }
-    break;
-  case problem_type::poiseuille:
-  case problem_type::couette: {
-    const double period = p.channel_length > 0 ? p.channel_length : 0.5 * L;
-    l.periodic_x = true;
-    l.top_wall = true;
-    l.fluid_lo = {0, 0}, l.fluid_hi = {period, L};
-    l.tank_lo = {0, 0}, l.tank_hi = {period, L};
-    if (p.type == problem_type::poiseuille) {
-      if (!(nu > 0)) throw rt::parameter_error(program + ": poiseuille needs dynamic_viscosity > 0");
-      l.speed_scale = std::fabs(fluid.body_force[0]) * L * L / (8 * nu);
-    } else {
-      l.speed_scale = std::fabs(p.lid_velocity);
+    case problem_type::dam_break:
+      l.fluid_lo = {p.column_offset, 0}, l.fluid_hi = {p.column_offset + L, 2 * L};
+      l.tank_lo = {0, 0}, l.tank_hi = {4 * L, 3 * L};
+      l.speed_scale = std::sqrt(2 * g * 2 * L);  // the front's speed, sqrt(2 g H) with H = 2 L
+      if (p.dimension == 3) {
+        // A whole number of spacings, so that the periodic lattice is uniform; the search needs
+        // a period above twice the interaction radius 2 h (ntree periodic reach).
+        const auto layers_z = std::max<std::int64_t>(1, std::llround((p.span > 0 ? p.span : 7 * l.dx) / l.dx));
+        l.tank_hi[2] = l.fluid_hi[2] = double(layers_z) * l.dx;
+        if (!(l.tank_hi[2] > 2 * support * (1 + 1e-9)))
+          throw rt::parameter_error(program + ": span = " + text(p.span) + " (" + std::to_string(layers_z) +
+                                    " spacings) is not wider than twice the kernel support 2 (2 h) = " +
+                                    text(2 * support) + ": the periodic images would overlap");
+      }
+      break;
+    case problem_type::poiseuille:
+    case problem_type::couette: {
+      const double period = p.channel_length > 0 ? p.channel_length : 0.5 * L;
+      l.periodic_x = true;
+      l.top_wall = true;
+      l.fluid_lo = {0, 0}, l.fluid_hi = {period, L};
+      l.tank_lo = {0, 0}, l.tank_hi = {period, L};
+      if (p.type == problem_type::poiseuille) {
+        if (!(nu > 0)) throw rt::parameter_error(program + ": poiseuille needs dynamic_viscosity > 0");
+        l.speed_scale = std::fabs(fluid.body_force[0]) * L * L / (8 * nu);
+      } else {
+        l.speed_scale = std::fabs(p.lid_velocity);
+      }
+      break;
     }
-    break;
-  }
   }
   if (!l.periodic_x && (l.fluid_lo[0] < l.tank_lo[0] - 1e-12 * L || l.fluid_hi[0] > l.tank_hi[0] + 1e-12 * L))
-    throw rt::parameter_error(program + ": column_offset = " + text(p.column_offset) + " puts fluid particles inside a wall: the fluid spans x in [" +
-                              text(l.fluid_lo[0]) + ", " + text(l.fluid_hi[0]) + "], the tank's inside [" +
-                              text(l.tank_lo[0]) + ", " + text(l.tank_hi[0]) + "]");
+    throw rt::parameter_error(program + ": column_offset = " + text(p.column_offset) +
+                              " puts fluid particles inside a wall: the fluid spans x in [" + text(l.fluid_lo[0]) +
+                              ", " + text(l.fluid_hi[0]) + "], the tank's inside [" + text(l.tank_lo[0]) + ", " +
+                              text(l.tank_hi[0]) + "]");
   fluid.expected_speed = l.speed_scale;
   flecsph::fluid::check_sound_speed(program, fluid);
   return l;
@@ -130,7 +130,9 @@ std::vector<particle> particles_of(const problem& p, const layout& l, const flec
   const auto count = [dx](double lo, double hi) { return static_cast<std::int64_t>(std::llround((hi - lo) / dx)); };
   // 2D: one z layer at z = 0; 3D: the 2D lattice repeated at z = (l + 1/2) dx across the span.
   const std::int64_t nz = l.dimension == 3 ? count(l.tank_lo[2], l.tank_hi[2]) : 1;
-  const auto z_of = [&](std::int64_t layer) { return l.dimension == 3 ? l.tank_lo[2] + (double(layer) + 0.5) * dx : 0.0; };
+  const auto z_of = [&](std::int64_t layer) {
+    return l.dimension == 3 ? l.tank_lo[2] + (double(layer) + 0.5) * dx : 0.0;
+  };
   const auto add = [&](double x, double y, double m, double rho, bool wall, double lid) {
     for (std::int64_t layer = 0; layer < nz; ++layer) out.push_back({{x, y, z_of(layer)}, m, rho, wall, {lid, 0, 0}});
   };
@@ -165,4 +167,4 @@ std::vector<particle> particles_of(const problem& p, const layout& l, const flec
   return out;
 }
 
-} // namespace fluid_app
+}  // namespace fluid_app

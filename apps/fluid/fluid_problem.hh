@@ -25,8 +25,8 @@ struct problem {
   /// Fluid particles across the reference length: the depth H (tank), the width L (channels),
   /// the column width L (dam break).
   std::int64_t particles = 50;
-  double length = 1;        ///< the reference length (m)
-  double h_factor = 1.5;    ///< h = h_factor dx (docs/fluid-flow.md: the lattice moment)
+  double length = 1;             ///< the reference length (m)
+  double h_factor = 1.5;         ///< h = h_factor dx (docs/fluid-flow.md: the lattice moment)
   std::int64_t wall_layers = 0;  ///< 0: enough to cover the kernel support 2 h
   double lid_velocity = 1e-5;    ///< couette: v0 of the lid at y = L
   double channel_length = 0;     ///< channels: the period along x (0: L / 2)
@@ -45,7 +45,7 @@ struct layout {
   std::array<double, 3> fluid_lo{}, fluid_hi{};  ///< fluid block (z: 3D only)
   std::array<double, 3> tank_lo{}, tank_hi{};    ///< inside of the walls (channels: lo.y, hi.y only)
   bool periodic_x = false, top_wall = false;     ///< 3D: always periodic along z, tank_lo.z to tank_hi.z
-  double speed_scale = 0;  ///< the flow's expected largest speed
+  double speed_scale = 0;                        ///< the flow's expected largest speed
 };
 
 /// The layout; parameter_errors name the keys: wall layers thinner than the support 2 h, a fluid
@@ -64,4 +64,4 @@ struct particle {
 /// m = rho dx^D; walls m = rho0 dx^D.
 std::vector<particle> particles_of(const problem& p, const layout& l, const flecsph::fluid::fluid_settings& fluid);
 
-} // namespace fluid_app
+}  // namespace fluid_app

@@ -23,7 +23,7 @@ using namespace flecsi_lite;
 /// The parameters of a run, each a key of the parameter file (heat_parameters).
 struct heat_settings {
   std::size_t cells = 4096;
-  double kappa = 1;         ///< diffusivity
+  double kappa = 1;  ///< diffusivity
   double end_time = 0.002;
   int analyze_every = 200;  ///< steps between diagnostics
 };
@@ -57,8 +57,8 @@ void initial_condition(simulation& s) {
   execute<heat::initialize>(m, heat::temperature(m));
   s.initial_heat = reduce<heat::total_heat, reduction::exact_sum>(m, heat::temperature(m)).get();
   s.start = std::chrono::steady_clock::now();
-  log::info() << "heat: " << s.cells << " cells on " << runtime::size() << " rank(s), kappa " << s.kappa
-              << ", dt " << s.dt << ", until t = " << s.end_time;
+  log::info() << "heat: " << s.cells << " cells on " << runtime::size() << " rank(s), kappa " << s.kappa << ", dt "
+              << s.dt << ", until t = " << s.end_time;
 }
 
 void diffuse(simulation& s) {
@@ -80,11 +80,11 @@ void analyze(simulation& s) {
   s.heat_drift = std::abs(total.get() - s.initial_heat);
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();
   const double fraction = s.time / s.end_time;
-  log::info() << "step " << std::setw(6) << s.step << "  t " << std::setw(10) << s.time << "  dt " << s.dt
-              << "  " << std::setw(5) << std::fixed << std::setprecision(1) << 100 * fraction << "%"
-              << std::defaultfloat << std::setprecision(6) << "  ETA " << elapsed * (1 - fraction) / fraction
-              << " s  " << s.cells * s.step / elapsed << " cell-steps/s  max error " << s.error
-              << "  heat drift " << s.heat_drift;
+  log::info() << "step " << std::setw(6) << s.step << "  t " << std::setw(10) << s.time << "  dt " << s.dt << "  "
+              << std::setw(5) << std::fixed << std::setprecision(1) << 100 * fraction << "%" << std::defaultfloat
+              << std::setprecision(6) << "  ETA " << elapsed * (1 - fraction) / fraction << " s  "
+              << s.cells * s.step / elapsed << " cell-steps/s  max error " << s.error << "  heat drift "
+              << s.heat_drift;
 }
 
 void report(simulation& s) {
@@ -121,7 +121,7 @@ double check_tolerance(const runtime::options& opts) {
     throw runtime::parameter_error("heat: --check takes a tolerance >= 0, not '" + text + "'");
   return tolerance;
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   app::definition heat;

@@ -11,4 +11,4 @@ using field = flecsi_lite::field<T>;
 
 inline const field<double>::definition<mesh> temperature{"temperature"};
 inline const field<double>::definition<mesh> next_temperature{"next_temperature"};
-} // namespace heat
+}  // namespace heat

@@ -53,4 +53,4 @@ inline flecsi_lite::util::exact_sum total_heat(const mesh& m, field<double>::acc
   for (std::size_t i = 0; i < u.size(); ++i) sum.add(u(i) / m.global_size());
   return sum;
 }
-} // namespace heat
+}  // namespace heat

@@ -31,10 +31,11 @@ void report(sedov_run<D>& s) {
   s.blast = sedov::compare_with_sedov_taylor(s, s.problem);
   std::ostringstream line;
   // 12 digits: plot_sedov.py reports the same comparison, apps.sedov.plot_matches_app compares them.
-  line << std::setprecision(12) << "sedov: at t = " << s.time << " the shock front (half height) is at r = "
-       << s.blast.front_radius << ", Sedov-Taylor shock radius " << s.blast.shock_radius << ", relative difference "
-       << s.blast.relative_error() << "; the density peaks at r = " << s.blast.peak_radius << " (mean "
-       << s.blast.peak_density << "; strong shock " << s.blast.analytic_peak << "); relative energy change "
+  line << std::setprecision(12) << "sedov: at t = " << s.time
+       << " the shock front (half height) is at r = " << s.blast.front_radius << ", Sedov-Taylor shock radius "
+       << s.blast.shock_radius << ", relative difference " << s.blast.relative_error()
+       << "; the density peaks at r = " << s.blast.peak_radius << " (mean " << s.blast.peak_density << "; strong shock "
+       << s.blast.analytic_peak << "); relative energy change "
        << (s.totals.total - s.initial_totals.total) / s.initial_totals.total;
   log::info() << line.str();
 }
@@ -50,7 +51,8 @@ int check(const sedov_run<D>& s, const runtime::options& opts) {
     throw std::invalid_argument("--check takes two numbers: radius,energy");
   const double energy = std::fabs(s.totals.total - s.initial_totals.total) / s.initial_totals.total;
   const bool pass = std::fabs(s.blast.relative_error()) <= radius_bound && energy <= energy_bound;
-  if (!pass) log::error() << "sedov: check failed (bounds: radius " << radius_bound << ", energy " << energy_bound << ")";
+  if (!pass)
+    log::error() << "sedov: check failed (bounds: radius " << radius_bound << ", energy " << energy_bound << ")";
   return pass ? 0 : 1;
 }
 
@@ -68,14 +70,17 @@ int run(const app::run_context& context) {
   m.action("finalize", "report", report<D>);
   return context.execute(m, s, [&context](const sedov_run<D>& state) { return check(state, context.options()); });
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   sph::app_definition definition;
   definition.program = "sedov";
-  definition.summary = "The Sedov-Taylor blast wave with SPH: H5Part output and the shock radius against the "
-                       "similarity solution.";
-  definition.declare_parameters = [](runtime::parameter_schema& schema) { sedov::problem_parameters().declare(schema); };
+  definition.summary =
+    "The Sedov-Taylor blast wave with SPH: H5Part output and the shock radius against the "
+    "similarity solution.";
+  definition.declare_parameters = [](runtime::parameter_schema& schema) {
+    sedov::problem_parameters().declare(schema);
+  };
   // Without a parameter file: the problem of apps/sedov/sedov_3d.par (validation.defaults.sedov).
   definition.physics_defaults.conductivity = 0;
   definition.run_defaults.end_time = 0.05;

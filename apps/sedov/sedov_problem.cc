@@ -18,7 +18,7 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
     .greater_than(0);
   return blast;
 }
-} // namespace
+}  // namespace
 
 const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
   static const auto block = declare_problem();
@@ -29,10 +29,9 @@ void check_problem(const problem& problem, const sph::physics_settings& physics,
   const std::string lattice_keys = "box_side, particles_per_side";
   sph::checked_count("sedov", "particles", std::pow(double(problem.per_side), dimension),
                      "particles_per_side, dimension");
-  const double spacing = sph::checked_length("sedov", "lattice spacing",
-                                             sph::checked_length("sedov", "box side", problem.side, "box_side") /
-                                               double(problem.per_side),
-                                             lattice_keys);
+  const double spacing = sph::checked_length(
+    "sedov", "lattice spacing",
+    sph::checked_length("sedov", "box side", problem.side, "box_side") / double(problem.per_side), lattice_keys);
   sph::checked_length("sedov", "smoothing length", physics.eta * spacing, "eta, " + lattice_keys);
   sph::checked_positive("sedov", "particle mass", problem.rho0 * std::pow(spacing, dimension), "rho0, " + lattice_keys);
   sph::checked_positive("sedov", "mass of the box", problem.rho0 * std::pow(problem.side, dimension), "rho0, box_side");
@@ -44,4 +43,4 @@ void check_problem(const problem& problem, const sph::physics_settings& physics,
                         "background_pressure, rho0, gamma");
 }
 
-} // namespace sedov
+}  // namespace sedov

@@ -18,9 +18,9 @@ namespace sph = flecsph::sph;
 
 struct problem {
   int dimension = 3;
-  std::int64_t per_side = 50;      ///< lattice particles per side of the box [-L/2, L/2]^D
+  std::int64_t per_side = 50;  ///< lattice particles per side of the box [-L/2, L/2]^D
   double side = 1.0;
-  double energy = 1.0;             ///< E, deposited with the kernel around the centre
+  double energy = 1.0;  ///< E, deposited with the kernel around the centre
   double rho0 = 1.0;
   double background_pressure = 1e-6;
 };
@@ -58,10 +58,9 @@ void create_lattice(sph::simulation<D>& s, const problem& problem) {
   sph::create_particles(s, block.count);
   const double spacing = problem.side / double(problem.per_side);
   // The mass and h whose SPH density sum on the cubic lattice is rho0 (not 0.2-0.4% more).
-  const auto particle = sph::density_consistent_particle<D>(s.physics, problem.rho0, std::pow(spacing, D),
-                                                            [&](double h) {
-    return sph::lattice_kernel_sum<D>(s.physics.kernel, h, spacing, spacing, 0.0);
-  });
+  const auto particle = sph::density_consistent_particle<D>(
+    s.physics, problem.rho0, std::pow(spacing, D),
+    [&](double h) { return sph::lattice_kernel_sum<D>(s.physics.kernel, h, spacing, spacing, 0.0); });
   const double mass = particle.mass;
   const double smoothing = particle.h;
   const double u_background = s.physics.eos.ideal.internal_energy(problem.rho0, problem.background_pressure);
@@ -124,11 +123,11 @@ shell_sums radial_density(double width, sph::ro<sph::vector<D>> x, sph::ro<doubl
 }
 
 struct blast_comparison {
-  double shock_radius = 0;     ///< Sedov-Taylor R(t)
-  double front_radius = 0;     ///< where the mean density falls to (peak + rho0) / 2 outside the peak
-  double peak_radius = 0;      ///< centre of the shell of highest mean density
-  double peak_density = 0;     ///< that mean density
-  double analytic_peak = 0;    ///< rho0 (gamma+1)/(gamma-1)
+  double shock_radius = 0;   ///< Sedov-Taylor R(t)
+  double front_radius = 0;   ///< where the mean density falls to (peak + rho0) / 2 outside the peak
+  double peak_radius = 0;    ///< centre of the shell of highest mean density
+  double peak_density = 0;   ///< that mean density
+  double analytic_peak = 0;  ///< rho0 (gamma+1)/(gamma-1)
   /// The smoothed shock's half-height point against R(t).
   double relative_error() const { return (front_radius - shock_radius) / shock_radius; }
 };
@@ -142,9 +141,9 @@ blast_comparison compare_with_sedov_taylor(sph::simulation<D>& s, const problem&
   result.shock_radius = exact.shock_radius(s.time);
   result.analytic_peak = exact.post_shock(s.time).rho;
   const double width = 1.5 * result.shock_radius / shell_count;
-  const auto sums =
-    flecsi_lite::reduce<radial_density<D>, shell_reduction>(width, f::position()(*s.particles), f::density(*s.particles))
-      .get();
+  const auto sums = flecsi_lite::reduce<radial_density<D>, shell_reduction>(width, f::position()(*s.particles),
+                                                                            f::density(*s.particles))
+                      .get();
   std::array<double, shell_count> mean{};
   int peak = -1;
   for (int i = 0; i < shell_count; ++i) {
@@ -167,4 +166,4 @@ blast_comparison compare_with_sedov_taylor(sph::simulation<D>& s, const problem&
   return result;
 }
 
-} // namespace sedov
+}  // namespace sedov

@@ -31,8 +31,9 @@ template<int D>
 void report(sod_run<D>& s) {
   s.errors = sod::measure_l1_errors(s, s.problem);
   std::ostringstream line;
-  line << std::scientific << std::setprecision(4) << "sod: L1 errors at t = " << s.time << " over "
-       << s.errors.count << " particles with |x - " << s.problem.x_interface << "| < " << s.problem.window
+  line << std::scientific << std::setprecision(4) << "sod: L1 errors at t = " << s.time << " over " << s.errors.count
+       << " particles with |x - " << s.problem.x_interface << "| < "
+       << s.problem.window
        // 12 digits: plot_sod.py reports the same errors, app.sod.plot_l1_matches_app compares them to 1e-10.
        << ": density " << std::setprecision(11) << s.errors.rho << ", pressure " << s.errors.P << ", velocity "
        << s.errors.v;
@@ -55,8 +56,8 @@ int check(const sod_run<D>& s, const runtime::options& opts) {
   if (opts.has("check-l1")) {
     const auto bounds = numbers(opts.get("check-l1"));
     if (bounds.size() != 3) throw std::invalid_argument("--check-l1 takes three numbers: density,pressure,velocity");
-    const bool ok = s.errors.count > 0 && s.errors.rho <= bounds[0] && s.errors.P <= bounds[1] &&
-                    s.errors.v <= bounds[2];
+    const bool ok =
+      s.errors.count > 0 && s.errors.rho <= bounds[0] && s.errors.P <= bounds[1] && s.errors.v <= bounds[2];
     if (!ok)
       log::error() << "sod: check failed: L1 errors (" << s.errors.rho << ", " << s.errors.P << ", " << s.errors.v
                    << ") exceed (" << bounds[0] << ", " << bounds[1] << ", " << bounds[2] << ")";
@@ -84,17 +85,17 @@ int run(const app::run_context& context) {
   s.problem = sod::problem_parameters().read(context.parameters());
   if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
     throw runtime::parameter_error("sod: the exact solution needs eos = ideal_gas");
-  s.description = {{"rho_left", s.problem.rho_left},     {"p_left", s.problem.p_left},
-                   {"rho_right", s.problem.rho_right},   {"p_right", s.problem.p_right},
-                   {"x_interface", s.problem.x_interface}, {"x_min", s.problem.x_min},
-                   {"x_max", s.problem.x_max}};
-  auto m = sph::make_app_control_model<sod_run<D>>(
-    {[](sod_run<D>& state) { sod::set_tube_domain(state, state.problem); },
-     [](sod_run<D>& state) { sod::create_tube(state, state.problem); }});
+  s.description = {
+    {"rho_left", s.problem.rho_left}, {"p_left", s.problem.p_left},           {"rho_right", s.problem.rho_right},
+    {"p_right", s.problem.p_right},   {"x_interface", s.problem.x_interface}, {"x_min", s.problem.x_min},
+    {"x_max", s.problem.x_max}};
+  auto m =
+    sph::make_app_control_model<sod_run<D>>({[](sod_run<D>& state) { sod::set_tube_domain(state, state.problem); },
+                                             [](sod_run<D>& state) { sod::create_tube(state, state.problem); }});
   m.action("finalize", "report", report<D>);
   return context.execute(m, s, [&context](const sod_run<D>& state) { return check(state, context.options()); });
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   sph::app_definition definition;

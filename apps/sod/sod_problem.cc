@@ -23,8 +23,9 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
   flecsi_lite::runtime::parameter_block<problem> tube;
   tube.integer("dimension", &problem::dimension, "space dimension of the tube (2, 3: periodic transverse axes)")
     .range(1, 3);
-  tube.integer("particles", &problem::particles,
-               "1D: fluid particles (equal masses); 2D/3D: mean particle spacings along x on the left")
+  tube
+    .integer("particles", &problem::particles,
+             "1D: fluid particles (equal masses); 2D/3D: mean particle spacings along x on the left")
     .at_least(2);
   tube.choice("lattice", &problem::lattice, lattice_names(), "2D/3D: lattice of the particles");
   tube.real("rho_left", &problem::rho_left, "density left of the interface").greater_than(0);
@@ -36,8 +37,9 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
   tube.real("x_max", &problem::x_max, "right end of the tube (a wall)");
   tube.real("tube_width", &problem::width, "2D/3D: period of the transverse axes (0: about 8 mean particle spacings)")
     .at_least(0);
-  tube.integer("wall_layers", &problem::wall_layers,
-               "fixed wall particles at each end (0: as many as the kernel reaches)")
+  tube
+    .integer("wall_layers", &problem::wall_layers,
+             "fixed wall particles at each end (0: as many as the kernel reaches)")
     .at_least(0);
   tube.real("l1_window", &problem::window, "L1 errors over the particles with |x - x_interface| < l1_window")
     .greater_than(0);
@@ -47,7 +49,7 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
   });
   return tube;
 }
-} // namespace
+}  // namespace
 
 const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
   static const auto block = declare_problem();
@@ -99,8 +101,8 @@ void check_layout(const problem& problem, const sph::physics_settings& physics, 
   const double layer_right = std::pow(double(layout.across_right), layout.dimension - 1);
   checked_count("sod", "particles per layer on the left", layer_left, "tube_width, " + tube_keys);
   checked_count("sod", "particles per layer on the right", layer_right, "tube_width, " + tube_keys);
-  const double particles = double(layout.walls_left + layout.left) * layer_left +
-                           double(layout.right + layout.walls_right) * layer_right;
+  const double particles =
+    double(layout.walls_left + layout.left) * layer_left + double(layout.right + layout.walls_right) * layer_right;
   checked_count("sod", "particles of the tube", particles, "wall_layers, search_margin, eta, tube_width, " + tube_keys);
   checked_positive("sod", "particle mass", layout.mass, tube_keys);
   checked_length("sod", "spacing along x on the left", layout.spacing_left, tube_keys);
@@ -123,7 +125,7 @@ void check_layout(const problem& problem, const sph::physics_settings& physics, 
   checked_positive("sod", "internal energy on the right", gas.internal_energy(problem.rho_right, problem.p_right),
                    "rho_right, p_right, gamma");
 }
-} // namespace
+}  // namespace
 
 tube_layout layout_of(const problem& problem, const sph::physics_settings& physics, int dimension) {
   tube_layout layout;
@@ -133,8 +135,8 @@ tube_layout layout_of(const problem& problem, const sph::physics_settings& physi
   const double length_right =
     checked_length("sod", "length right of the interface", problem.x_max - problem.x_interface, right_keys);
   if (dimension == 1) {
-    const double mass_left = checked_positive("sod", "mass left of the interface", problem.rho_left * length_left,
-                                              "rho_left, " + left_keys);
+    const double mass_left =
+      checked_positive("sod", "mass left of the interface", problem.rho_left * length_left, "rho_left, " + left_keys);
     const double mass_right = checked_positive("sod", "mass right of the interface", problem.rho_right * length_right,
                                                "rho_right, " + right_keys);
     const double total = checked_positive("sod", "mass of the tube", mass_left + mass_right, tube_keys);
@@ -181,10 +183,10 @@ tube_layout layout_of(const problem& problem, const sph::physics_settings& physi
   }
   checked_length("sod", "spacing along x on the left", layout.spacing_left, tube_keys);
   checked_length("sod", "spacing along x on the right", layout.spacing_right, tube_keys);
-  layout.walls_left = wall_layers(problem, physics, initial_h(physics, dimension, layout.mass, problem.rho_left),
-                                  layout.spacing_left);
-  layout.walls_right = wall_layers(problem, physics, initial_h(physics, dimension, layout.mass, problem.rho_right),
-                                   layout.spacing_right);
+  layout.walls_left =
+    wall_layers(problem, physics, initial_h(physics, dimension, layout.mass, problem.rho_left), layout.spacing_left);
+  layout.walls_right =
+    wall_layers(problem, physics, initial_h(physics, dimension, layout.mass, problem.rho_right), layout.spacing_right);
   check_layout(problem, physics, layout);
   const auto consistent = [&](double rho, double along, double across) {
     const double volume = layout.mass / rho, shift = layout.body_centred ? 0.5 : 0.0;
@@ -194,8 +196,9 @@ tube_layout layout_of(const problem& problem, const sph::physics_settings& physi
         return sph::lattice_kernel_sum<D>(physics.kernel, h, along, across, shift);
       });
     };
-    return dimension == 1 ? sum(std::integral_constant<int, 1>{})
-                          : dimension == 2 ? sum(std::integral_constant<int, 2>{}) : sum(std::integral_constant<int, 3>{});
+    return dimension == 1   ? sum(std::integral_constant<int, 1>{})
+           : dimension == 2 ? sum(std::integral_constant<int, 2>{})
+                            : sum(std::integral_constant<int, 3>{});
   };
   const auto left = consistent(problem.rho_left, layout.spacing_left, layout.across_spacing_left);
   const auto right = consistent(problem.rho_right, layout.spacing_right, layout.across_spacing_right);
@@ -229,9 +232,9 @@ tube_particle particle_of(const problem& problem, const sph::physics_settings& /
   particle.P = left ? problem.p_left : problem.p_right;
   particle.h = left ? layout.h_left : layout.h_right;
   particle.m = left ? layout.mass_left : layout.mass_right;
-  particle.kind = from_interface < (left ? layout.left : layout.right) ? sph::particle_kind::fluid
-                                                                        : sph::particle_kind::wall;
+  particle.kind =
+    from_interface < (left ? layout.left : layout.right) ? sph::particle_kind::fluid : sph::particle_kind::wall;
   return particle;
 }
 
-} // namespace sod
+}  // namespace sod

@@ -52,9 +52,9 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters();
 struct tube_layout {
   int dimension = 1;
   bool body_centred = false;
-  std::int64_t left = 0, right = 0;                 ///< fluid layers along x
-  std::int64_t walls_left = 0, walls_right = 0;     ///< wall layers beyond each end
-  std::int64_t across_left = 1, across_right = 1;   ///< particles per transverse axis
+  std::int64_t left = 0, right = 0;                      ///< fluid layers along x
+  std::int64_t walls_left = 0, walls_right = 0;          ///< wall layers beyond each end
+  std::int64_t across_left = 1, across_right = 1;        ///< particles per transverse axis
   double mass = 0, spacing_left = 0, spacing_right = 0;  ///< along x; `mass` sets the spacings
   /// The particles' masses and initial h on each side: the density-consistent ones of the lattice
   /// (sph::density_consistent_particle), whose SPH density sum is rho_left and rho_right.
@@ -66,7 +66,7 @@ struct tube_layout {
   std::int64_t total() const { return (walls_left + left) * layer_left() + (right + walls_right) * layer_right(); }
   std::int64_t fluid() const { return left * layer_left() + right * layer_right(); }
 
-private:
+ private:
   std::int64_t power(std::int64_t n) const { return dimension == 1 ? 1 : dimension == 2 ? n : n * n; }
 };
 
@@ -148,8 +148,7 @@ struct l1_reduction {
 
 template<int D>
 l1_sums l1_error_sums(const flecsph::analytic::riemann_solution& exact, double time, double x0, double window,
-                      sph::ro<sph::vector<D>> x, sph::ro<sph::vector<D>> v,
-                      sph::ro<double> rho, sph::ro<double> P,
+                      sph::ro<sph::vector<D>> x, sph::ro<sph::vector<D>> v, sph::ro<double> rho, sph::ro<double> P,
                       sph::ro<sph::particle_kind> kind) {
   l1_sums sums;
   for (std::size_t a = 0; a < x.size(); ++a) {
@@ -173,14 +172,12 @@ template<int D>
 l1_errors measure_l1_errors(sph::simulation<D>& s, const problem& problem) {
   using f = sph::fields<D>;
   auto& p = *s.particles;
-  const auto exact = flecsph::analytic::solve_riemann_problem({problem.rho_left, 0.0, problem.p_left},
-                                                              {problem.rho_right, 0.0, problem.p_right},
-                                                              s.physics.eos.ideal.gamma);
-  const l1_sums sums =
-    flecsi_lite::reduce<l1_error_sums<D>, l1_reduction>(exact, s.time, problem.x_interface, problem.window,
-                                                        f::position()(p), f::velocity(p), f::density(p),
-                                                        f::pressure(p), f::kind(p))
-      .get();
+  const auto exact = flecsph::analytic::solve_riemann_problem(
+    {problem.rho_left, 0.0, problem.p_left}, {problem.rho_right, 0.0, problem.p_right}, s.physics.eos.ideal.gamma);
+  const l1_sums sums = flecsi_lite::reduce<l1_error_sums<D>, l1_reduction>(
+                         exact, s.time, problem.x_interface, problem.window, f::position()(p), f::velocity(p),
+                         f::density(p), f::pressure(p), f::kind(p))
+                         .get();
   l1_errors e;
   e.count = static_cast<std::uint64_t>(sums.count.value());
   if (e.count == 0) return e;
@@ -191,4 +188,4 @@ l1_errors measure_l1_errors(sph::simulation<D>& s, const problem& problem) {
   return e;
 }
 
-} // namespace sod
+}  // namespace sod

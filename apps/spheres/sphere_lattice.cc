@@ -57,10 +57,12 @@ double fraction_radius(const std::vector<site>& sites, double fraction) {
   radial_mass bins;
   for (const auto& x : sites) {
     const auto bin = static_cast<long>(radius(x) / r_max * bin_count);
-    if (bin >= bin_count) bins.outside += 1;
-    else bins.mass[static_cast<std::size_t>(std::max(0L, bin))] += 1;
+    if (bin >= bin_count)
+      bins.outside += 1;
+    else
+      bins.mass[static_cast<std::size_t>(std::max(0L, bin))] += 1;
   }
   return fraction_radius(bins, r_max, fraction);
 }
 
-} // namespace spheres
+}  // namespace spheres

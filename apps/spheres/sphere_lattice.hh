@@ -59,8 +59,10 @@ inline radial_mass mass_in_bins(double r_max, sph::ro<sph::vector<3>> x, sph::ro
   for (std::size_t a = 0; a < x.size(); ++a) {
     const double r = radius({x(a)[0], x(a)[1], x(a)[2]});
     const auto bin = static_cast<long>(r / r_max * bin_count);
-    if (bin >= bin_count) bins.outside += m(a);
-    else bins.mass[static_cast<std::size_t>(std::max(0L, bin))] += m(a);
+    if (bin >= bin_count)
+      bins.outside += m(a);
+    else
+      bins.mass[static_cast<std::size_t>(std::max(0L, bin))] += m(a);
   }
   return bins;
 }
@@ -79,8 +81,9 @@ inline double mass_fraction_radius(sph::simulation<3>& s, double fraction) {
   auto& p = *s.particles;
   namespace reduction = flecsi_lite::reduction;
   const double r_max = 1.000001 * flecsi_lite::reduce<largest_radius, reduction::max>(f::position()(p)).get();
-  const auto bins = flecsi_lite::reduce<mass_in_bins, radial_mass_reduction>(r_max, f::position()(p), f::mass()(p)).get();
+  const auto bins =
+    flecsi_lite::reduce<mass_in_bins, radial_mass_reduction>(r_max, f::position()(p), f::mass()(p)).get();
   return fraction_radius(bins, r_max, fraction);
 }
 
-} // namespace spheres
+}  // namespace spheres

@@ -59,8 +59,9 @@ int run(int argc, char** argv) {
   runtime::options options("Exports one step of an H5Part file as ASCII columns for splash -f ascii.");
   options.flag("help", "print this help and exit")
     .value("step", "K", "the step to export: index k of Step#k, or 'last'", "last")
-    .value("columns", "A,B,...", "comma-separated datasets to export (default: those of x y z vx vy "
-                                 "vz m rho P u h id present, else all)")
+    .value("columns", "A,B,...",
+           "comma-separated datasets to export (default: those of x y z vx vy "
+           "vz m rho P u h id present, else all)")
     .value("output", "FILE", "write to FILE instead of standard output")
     .flag("list", "list the steps, their times and the datasets of the step, and exit")
     .positional("file", "the H5Part file");
@@ -116,7 +117,7 @@ int run(int argc, char** argv) {
     return 1;
   }
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);

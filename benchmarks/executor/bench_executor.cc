@@ -47,8 +47,8 @@ void launch_overhead(long launches) {
   if (runtime::rank() == 0) {
     std::printf("task launch (%ld launches of a one-element task)\n", launches);
     std::printf("  direct call          %10.1f ns per call\n", 1e9 * direct_time / launches);
-    std::printf("  execute, queued      %10.1f ns per launch   ratio to direct %8.1f\n",
-                1e9 * queued_time / launches, queued_time / direct_time);
+    std::printf("  execute, queued      %10.1f ns per launch   ratio to direct %8.1f\n", 1e9 * queued_time / launches,
+                queued_time / direct_time);
     std::printf("  execute + wait       %10.1f ns per launch   ratio to direct %8.1f\n",
                 1e9 * synchronous_time / launches, synchronous_time / direct_time);
   }
@@ -109,7 +109,7 @@ void ghost_copy_throughput(std::size_t halo, int copies) {
                 bytes / framework_time / 1e6, framework_time / manual_time);
   }
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   runtime::options options("Executor benchmarks: launch overhead and ghost-copy throughput.");

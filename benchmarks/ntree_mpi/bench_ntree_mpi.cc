@@ -12,9 +12,9 @@
 #include <mpi.h>
 
 #include <cmath>
-#include <ctime>
 #include <cstdint>
 #include <cstdio>
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -34,9 +34,7 @@ double uniform_of(std::uint64_t index, std::uint64_t stream) {
 }
 
 constexpr double neighbours_wanted = 40;
-double h_for_density(double density) {
-  return 0.5 * std::cbrt(neighbours_wanted / (4.0 / 3.0 * M_PI * density));
-}
+double h_for_density(double density) { return 0.5 * std::cbrt(neighbours_wanted / (4.0 / 3.0 * M_PI * density)); }
 
 // Particles [first, first + count) of `total`: uniform in the unit cube, or a Plummer sphere
 // (scale radius 1, truncated at 20) with h from its analytic density.
@@ -64,8 +62,7 @@ void generate(std::uint64_t first, bool plummer, std::uint64_t total, field<nt::
   });
 }
 
-void drift(field<nt::point<3>>::accessor<rw> x, field<std::uint64_t>::accessor<ro> id,
-           field<double>::accessor<ro> h) {
+void drift(field<nt::point<3>>::accessor<rw> x, field<std::uint64_t>::accessor<ro> id, field<double>::accessor<ro> h) {
   forall(x.size(), [&](std::size_t i) {
     for (int k = 0; k < 3; ++k) x(i)[k] += 0.1 * h(i) * (2 * uniform_of(id(i), 10 + k) - 1);
   });
@@ -119,8 +116,8 @@ step_result step(tree_type& tree) {
 void report(const char* title, const step_result& result) {
   const nt::distribution_stats& s = result.stats;
   const search_result& found = result.found;
-  const double phases[] = {s.time_keys, s.time_splitters, s.time_exchange, s.time_local_sort, s.time_branches,
-                           s.time_ghosts, s.time_tree, s.time_total};
+  const double phases[] = {s.time_keys,     s.time_splitters, s.time_exchange, s.time_local_sort,
+                           s.time_branches, s.time_ghosts,    s.time_tree,     s.time_total};
   double slowest[8];
   for (int p = 0; p < 8; ++p) slowest[p] = max_over_ranks(phases[p]);
   // Ghost fraction of every rank.
@@ -131,20 +128,21 @@ void report(const char* title, const step_result& result) {
   MPI_Gather(mine, 2, MPI_DOUBLE, fractions.data(), 2, MPI_DOUBLE, 0, runtime::communicator());
   if (runtime::rank() != 0) return;
   std::printf("%s\n", title);
-  std::printf("  keys %.4f  splitters %.4f  exchange %.4f  local sort %.4f  branches %.4f  ghosts %.4f  "
-              "tree %.4f  | distribute %.4f s\n",
-              slowest[0], slowest[1], slowest[2], slowest[3], slowest[4], slowest[5], slowest[6], slowest[7]);
-  std::printf("  neighbour search %.4f s, cpu %.4f s (%.1f neighbours per particle)"
-              "  | total %.4f s, cpu %.4f s\n",
-              found.seconds, found.cpu_seconds, found.neighbours_per_particle, result.wall, result.cpu);
-  std::printf("  particles: min %zu max %zu, imbalance %.4f; moved %llu; %zu bytes per particle moved\n",
-              s.owned_min, s.owned_max, s.count_imbalance, static_cast<unsigned long long>(s.moved),
-              s.bytes_per_particle);
+  std::printf(
+    "  keys %.4f  splitters %.4f  exchange %.4f  local sort %.4f  branches %.4f  ghosts %.4f  "
+    "tree %.4f  | distribute %.4f s\n",
+    slowest[0], slowest[1], slowest[2], slowest[3], slowest[4], slowest[5], slowest[6], slowest[7]);
+  std::printf(
+    "  neighbour search %.4f s, cpu %.4f s (%.1f neighbours per particle)"
+    "  | total %.4f s, cpu %.4f s\n",
+    found.seconds, found.cpu_seconds, found.neighbours_per_particle, result.wall, result.cpu);
+  std::printf("  particles: min %zu max %zu, imbalance %.4f; moved %llu; %zu bytes per particle moved\n", s.owned_min,
+              s.owned_max, s.count_imbalance, static_cast<unsigned long long>(s.moved), s.bytes_per_particle);
   for (int r = 0; r < runtime::size(); ++r)
     std::printf("  rank %d: ghosts / owned %.4f, shared / owned %.4f\n", r, fractions[2 * r], fractions[2 * r + 1]);
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   runtime::options options("Distributed ntree: distribution, ghosts, local tree and neighbour search.");

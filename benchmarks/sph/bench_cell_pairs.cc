@@ -21,10 +21,10 @@
 // relative difference, which must stay at rounding level (the sums' order differs).
 #include "nominal_clock.hh"
 
-#include "specialization/sph/density.hh"
-#include "specialization/sph/forces.hh"
 #include "specialization/physics/kernels/cubic_spline.hh"
 #include "specialization/physics/viscosity.hh"
+#include "specialization/sph/density.hh"
+#include "specialization/sph/forces.hh"
 
 #include <algorithm>
 #include <chrono>
@@ -69,13 +69,20 @@ options parse(int argc, char** argv) {
     if (i + 1 >= argc) usage("missing value after " + key);
     const std::string value = argv[++i];
     try {
-      if (key == "--per-side") o.per_side = std::stoi(value);
-      else if (key == "--eta") o.eta = std::stod(value);
-      else if (key == "--jitter") o.jitter = std::stod(value);
-      else if (key == "--split") o.split = std::stoi(value);
-      else if (key == "--repeats") o.repeats = std::stoi(value);
-      else if (key == "--clock-ghz") o.clock_ghz = std::stod(value);
-      else usage("unknown option " + key);
+      if (key == "--per-side")
+        o.per_side = std::stoi(value);
+      else if (key == "--eta")
+        o.eta = std::stod(value);
+      else if (key == "--jitter")
+        o.jitter = std::stod(value);
+      else if (key == "--split")
+        o.split = std::stoi(value);
+      else if (key == "--repeats")
+        o.repeats = std::stoi(value);
+      else if (key == "--clock-ghz")
+        o.clock_ghz = std::stod(value);
+      else
+        usage("unknown option " + key);
     } catch (const std::logic_error&) {
       usage("bad value '" + value + "' for " + key);
     }
@@ -87,7 +94,7 @@ options parse(int argc, char** argv) {
 
 /// The particles in cell order (x fastest), as SoA arrays padded with W far-away entries.
 struct cell_grid {
-  int cells = 0;  ///< per side; the box is [0, 1)^3, periodic
+  int cells = 0;                   ///< per side; the box is [0, 1)^3, periodic
   std::vector<std::size_t> start;  ///< first particle of each cell, and the total at the end
   std::vector<double> x, y, z, m;
 
@@ -176,7 +183,7 @@ void for_each_row(const cell_grid& g, int cx, int cy, int cz, int S, Visit&& vis
 /// sorted by x and a cell's targets come in ascending x, so the cut's ends only move forward.
 template<bool Cut>
 class cell_rows {
-public:
+ public:
   cell_rows(const cell_grid& g, int S, double reach) : g_(g), S_(S), reach_(reach) {}
 
   void start(int cx, int cy, int cz) {
@@ -219,7 +226,7 @@ public:
     }
   }
 
-private:
+ private:
   const cell_grid& g_;
   int S_;
   double reach_;
@@ -266,9 +273,8 @@ template<bool Cut>
 double candidate_count(const cell_grid& g, int S, double reach) {
   double candidates = 0;
   cell_rows<Cut> rows(g, S, reach);
-  rows.for_each_target([&](std::size_t a) {
-    rows.visit(a, [&](const candidate_range& r) { candidates += double(r.end - r.begin); });
-  });
+  rows.for_each_target(
+    [&](std::size_t a) { rows.visit(a, [&](const candidate_range& r) { candidates += double(r.end - r.begin); }); });
   return candidates;
 }
 
@@ -293,9 +299,8 @@ sph::neighbourhood<3> lists_of(const cell_grid& g, double h, int S) {
         if (dx * dx + dy * dy + dz * dz < reach2) row.push_back(tree::packed_entry(std::uint32_t(b), code));
       }
     });
-    std::sort(row.begin(), row.end(), [](std::uint32_t p, std::uint32_t q) {
-      return tree::packed_neighbour(p) < tree::packed_neighbour(q);
-    });
+    std::sort(row.begin(), row.end(),
+              [](std::uint32_t p, std::uint32_t q) { return tree::packed_neighbour(p) < tree::packed_neighbour(q); });
     n.lists.neighbours.insert(n.lists.neighbours.end(), row.begin(), row.end());
     n.lists.offsets[a + 1] = n.lists.neighbours.size();
   });
@@ -391,9 +396,7 @@ void forces_by_cells(const cell_grid& g, const force_inputs& f, int S, const phy
         const T c_b = simd::load<T>(&f.cs[j]), rho_b = simd::load<T>(&f.rho[j]);
         const T Pi = simd::select(
           r_dot_v < 0.0,
-          physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
-                                                 {rho_b, c_b, h_b, T(1.0)}),
-          zero);
+          physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a, {rho_b, c_b, h_b, T(1.0)}), zero);
         const T bracket = (term_a * F_a + simd::load<T>(&f.pressure_term[j]) * F_b) + Pi * F_ab;
         const T m_b = simd::load<T>(&g.m[j]);
         for (int k = 0; k < 3; ++k) sum_v[k].subtract(simd::select(pair, m_b * bracket * r[k], zero));
@@ -412,8 +415,9 @@ void forces_by_cells(const cell_grid& g, const force_inputs& f, int S, const phy
 void forces_by_lists(const sph::neighbourhood<3>& n, const std::vector<sph::vector<3>>& x, const std::vector<double>& m,
                      const force_inputs& f, const physics::viscosity_parameters& viscosity, force_results& out) {
   const sph::neighbour_walk<3> walk(n);
-  sph::detail::force_fields<3> in{x.data(), f.v.data(), m.data(), f.h.data(), f.rho.data(), f.P.data(), f.cs.data(),
-                                  f.pressure_term.data(), f.u.data(), nullptr};
+  sph::detail::force_fields<3> in{x.data(),     f.v.data(), m.data(),    f.h.data(),
+                                  f.rho.data(), f.P.data(), f.cs.data(), f.pressure_term.data(),
+                                  f.u.data(),   nullptr};
   in.inverse_h = f.inverse_h.data();
   for (std::size_t a = 0; a < n.size(); ++a) {
     sph::vector<3> dv;
@@ -442,7 +446,7 @@ double fastest_of(int repeats, F&& f) {
   }
   return best;
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   const options o = parse(argc, argv);
@@ -489,11 +493,11 @@ int main(int argc, char** argv) {
     fastest_of(o.repeats, [&] { forces_by_cells<true>(grid, gas, o.split, viscosity, support, forces_c); });
   const double forces_lists_s = fastest_of(o.repeats, [&] { forces_by_lists(lists, x, m, gas, viscosity, forces_l); });
 
-  const double worst = std::max(
-    {relative_difference(rho_c, rho_l), relative_difference(drho_c, drho_l),
-     relative_difference(forces_c.ax, forces_l.ax), relative_difference(forces_c.ay, forces_l.ay),
-     relative_difference(forces_c.az, forces_l.az), relative_difference(forces_c.du, forces_l.du),
-     relative_difference(forces_c.signal, forces_l.signal)});
+  const double worst =
+    std::max({relative_difference(rho_c, rho_l), relative_difference(drho_c, drho_l),
+              relative_difference(forces_c.ax, forces_l.ax), relative_difference(forces_c.ay, forces_l.ay),
+              relative_difference(forces_c.az, forces_l.az), relative_difference(forces_c.du, forces_l.du),
+              relative_difference(forces_c.signal, forces_l.signal)});
 
   const double hits = double(lists.lists.total());
   const auto cycles = [&](double seconds) { return seconds * ghz * 1e9 / hits; };
@@ -517,6 +521,7 @@ int main(int argc, char** argv) {
             << "    cells: sort into cells per step      " << cycles(sort_s) << "\n"
             << std::scientific << std::setprecision(2)
             << "  largest difference between the routes (rho, d rho / d h, dv/dt, du/dt, signal velocity; relative to "
-               "each one's largest value) " << worst << "\n";
+               "each one's largest value) "
+            << worst << "\n";
   return worst < 1e-10 ? 0 : 1;
 }

@@ -6,8 +6,8 @@
 //   OMP_NUM_THREADS=2 bench_sedov --per-side 50 --steps 10
 //   mpirun -np 2 bench_sedov --per-side 100
 // benchmarks/sph/run_scaling.sh runs 1 rank x 1 thread, 1 x 2 and 2 x 1 and prints the speed-ups.
-#include "sedov_problem.hh"
 #include "nominal_clock.hh"
+#include "sedov_problem.hh"
 
 #include "specialization/sph/driver.hh"
 
@@ -19,8 +19,8 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <limits>
 #include <string>
 #include <vector>
@@ -33,8 +33,8 @@ constexpr int D = 3;
 struct bench_state : sph::simulation<D> {
   sedov::problem problem;
   long warm_up_steps = 1, timed_steps = 10;
-  double clock_ghz = 1;  ///< the clock the cycles per pair are counted at
-  double start = 0, stop = 0;  ///< MPI_Wtime at the end of the warm-up and of the timed steps
+  double clock_ghz = 1;                      ///< the clock the cycles per pair are counted at
+  double start = 0, stop = 0;                ///< MPI_Wtime at the end of the warm-up and of the timed steps
   std::clock_t cpu_start = 0, cpu_stop = 0;  ///< CPU time of this process (all its threads), same
   std::uint64_t distributions_before = 0, repeated_searches_before = 0, searches_before = 0;
   std::uint64_t moved_particles_before = 0;
@@ -95,7 +95,8 @@ long count_option(const runtime::options& opts, const std::string& name) {
     used = 0;
   }
   if (used == 0 || used != text.size() || value < 1)
-    throw runtime::parameter_error("bench_sedov: --" + name + " takes a whole number of at least 1, not '" + text + "'");
+    throw runtime::parameter_error("bench_sedov: --" + name + " takes a whole number of at least 1, not '" + text +
+                                   "'");
   return value;
 }
 
@@ -161,33 +162,38 @@ void report(bench_state& s) {
   std::printf("bench_sedov: %lld^3 = %.0f particles, eta %.3g, %d rank(s) x %d thread(s), %ld timed steps after %ld\n",
               static_cast<long long>(s.problem.per_side), particles, s.physics.eta, runtime::size(),
               Kokkos::DefaultHostExecutionSpace().concurrency(), s.timed_steps, s.warm_up_steps);
-  std::printf("  wall time per step %.4f s; throughput %.4e particle-steps/s\n", per_step,
-              particles / per_step);
+  std::printf("  wall time per step %.4f s; throughput %.4e particle-steps/s\n", per_step, particles / per_step);
   std::printf("  CPU time per step (largest over ranks, all threads of a rank) %.4f s: %.2f cores busy per rank\n",
               cpu / static_cast<double>(s.timed_steps), cpu / seconds);
   const auto& n = s.neighbours.host();
-  std::printf("  neighbours per particle: %.1f within 2 h (kernel), %.1f within the reach %.3g max(h_a, h_b), "
-              "%.1f in the lists (searched with reach %.3g max(h_a, h_b): list_skin %.3g)\n",
-              in_kernel / particles, in_reach / particles, n.reach, entries / particles, n.list_reach, s.physics.list_skin);
-  std::printf("  bytes per owned particle (largest over ranks): %.0f fields + %.0f neighbour lists = %.0f; "
-              "besides, %.0f in the local tree and search workspaces\n",
-              field_bytes, list_bytes, field_bytes + list_bytes, tree_bytes);
+  std::printf(
+    "  neighbours per particle: %.1f within 2 h (kernel), %.1f within the reach %.3g max(h_a, h_b), "
+    "%.1f in the lists (searched with reach %.3g max(h_a, h_b): list_skin %.3g)\n",
+    in_kernel / particles, in_reach / particles, n.reach, entries / particles, n.list_reach, s.physics.list_skin);
+  std::printf(
+    "  bytes per owned particle (largest over ranks): %.0f fields + %.0f neighbour lists = %.0f; "
+    "besides, %.0f in the local tree and search workspaces\n",
+    field_bytes, list_bytes, field_bytes + list_bytes, tree_bytes);
   const auto searches = s.searches - s.searches_before;
-  std::printf("  during the timed steps: %llu distributions, %llu repeated searches, %llu neighbour searches "
-              "(a list lives %.2f steps)\n",
-              static_cast<unsigned long long>(s.distributions - s.distributions_before),
-              static_cast<unsigned long long>(s.repeated_searches - s.repeated_searches_before),
-              static_cast<unsigned long long>(searches),
-              searches ? double(s.timed_steps) / double(searches) : double(s.timed_steps));
+  std::printf(
+    "  during the timed steps: %llu distributions, %llu repeated searches, %llu neighbour searches "
+    "(a list lives %.2f steps)\n",
+    static_cast<unsigned long long>(s.distributions - s.distributions_before),
+    static_cast<unsigned long long>(s.repeated_searches - s.repeated_searches_before),
+    static_cast<unsigned long long>(searches),
+    searches ? double(s.timed_steps) / double(searches) : double(s.timed_steps));
   const auto distributions = s.distributions - s.distributions_before;
-  const double moved = double(s.moved_particles - s.moved_particles_before), moved_bytes = s.moved_bytes - s.moved_bytes_before;
-  std::printf("  distribution (%s keys): %.4f ghosts per owned particle (%.4f on the rank with most); per "
-              "distribution of the timed steps %.0f particles moved, %.4g bytes (%.4g per particle)\n",
-              sph::key_order_names().name(s.physics.key_order).c_str(), ghosts_per_owned, ghosts_per_owned_max,
-              distributions ? moved / double(distributions) : 0.0, distributions ? moved_bytes / double(distributions) : 0.0,
-              distributions ? moved_bytes / double(distributions) / particles : 0.0);
-  std::printf("  time per step by timer (largest over ranks; 'ntree::distribute <phase>' rows are parts of "
-              "'ntree::distribute'):\n");
+  const double moved = double(s.moved_particles - s.moved_particles_before),
+               moved_bytes = s.moved_bytes - s.moved_bytes_before;
+  std::printf(
+    "  distribution (%s keys): %.4f ghosts per owned particle (%.4f on the rank with most); per "
+    "distribution of the timed steps %.0f particles moved, %.4g bytes (%.4g per particle)\n",
+    sph::key_order_names().name(s.physics.key_order).c_str(), ghosts_per_owned, ghosts_per_owned_max,
+    distributions ? moved / double(distributions) : 0.0, distributions ? moved_bytes / double(distributions) : 0.0,
+    distributions ? moved_bytes / double(distributions) / particles : 0.0);
+  std::printf(
+    "  time per step by timer (largest over ranks; 'ntree::distribute <phase>' rows are parts of "
+    "'ntree::distribute'):\n");
   std::vector<timers::summary_row> sorted(rows.begin(), rows.end());
   std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.max > b.max; });
   for (const auto& row : sorted) {
@@ -204,25 +210,27 @@ void report(bench_state& s) {
       if (row.name == timer) return row.max / double(s.timed_steps) * s.clock_ghz * 1e9 * cores / entries;
     return 0.0;
   };
-  std::printf("  cycles per list entry at %.2f GHz (x %.0f cores): forces %.1f, density %.1f; search and refit %.4f s "
-              "per step\n",
-              s.clock_ghz, cores, cycles_per_entry("sph::compute_forces"), cycles_per_entry("sph::compute_density"),
-              [&] {
-                double t = 0;
-                for (const auto& row : rows)
-                  if (row.name == "sph::search_neighbours" || row.name == "ntree::refit") t += row.max;
-                return t / double(s.timed_steps);
-              }());
-  std::printf("  peak resident memory %.0f MiB per rank: %.0f bytes per owned particle (the libraries' own "
-              "memory included)\n",
-              peak_kib / 1024.0, peak_kib * 1024.0 / (particles / double(runtime::size())));
+  std::printf(
+    "  cycles per list entry at %.2f GHz (x %.0f cores): forces %.1f, density %.1f; search and refit %.4f s "
+    "per step\n",
+    s.clock_ghz, cores, cycles_per_entry("sph::compute_forces"), cycles_per_entry("sph::compute_density"), [&] {
+      double t = 0;
+      for (const auto& row : rows)
+        if (row.name == "sph::search_neighbours" || row.name == "ntree::refit") t += row.max;
+      return t / double(s.timed_steps);
+    }());
+  std::printf(
+    "  peak resident memory %.0f MiB per rank: %.0f bytes per owned particle (the libraries' own "
+    "memory included)\n",
+    peak_kib / 1024.0, peak_kib * 1024.0 / (particles / double(runtime::size())));
   std::printf("throughput: %.4e particle-steps/s\n", particles / per_step);
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
-  runtime::options options("The SPH step on the 3D Sedov-Taylor blast: time per step, throughput, neighbours, "
-                           "time per task, bytes per particle.");
+  runtime::options options(
+    "The SPH step on the 3D Sedov-Taylor blast: time per step, throughput, neighbours, "
+    "time per task, bytes per particle.");
   options.value("per-side", "N", "lattice particles per side (N^3 particles)", "50")
     .value("steps", "S", "timed steps", "10")
     .value("warm-up", "W", "steps before the timed ones (the first distributes the lattice)", "1")

@@ -17,4 +17,4 @@ inline double nominal_clock_ghz(double given) {
   return 1.0;
 }
 
-} // namespace flecsph::benchmarks
+}  // namespace flecsph::benchmarks

@@ -40,10 +40,10 @@ void require_writable(const named_file& file) {
 void require_distinct(const named_file& written, const named_file& other) {
   if (names_same_file(written.path, other.path))
     throw parameter_error(std::string(written.key) + " = '" + written.path + "' and " + other.key + " = '" +
-                          other.path + "' name the same file (or its temporary '.partial'): writing " +
-                          written.key + " would destroy it; give them different paths");
+                          other.path + "' name the same file (or its temporary '.partial'): writing " + written.key +
+                          " would destroy it; give them different paths");
 }
-} // namespace
+}  // namespace
 
 bool names_same_file(const std::string& a, const std::string& b) {
   if (a.empty() || b.empty()) return false;
@@ -54,15 +54,18 @@ bool names_same_file(const std::string& a, const std::string& b) {
 runtime::parameter_block<file_settings> file_parameters(const file_settings& defaults) {
   runtime::parameter_block<file_settings> files(defaults);
   files.file("output_file", &file_settings::output_file, "H5Part output file (none: no output)");
-  files.real("output_every", &file_settings::output_every, "simulation time between outputs (0: first and last step only)")
+  files
+    .real("output_every", &file_settings::output_every, "simulation time between outputs (0: first and last step only)")
     .at_least(0);
   files.file("checkpoint_file", &file_settings::checkpoint_file,
              "checkpoint (H5Part) for restarts, replaced at each checkpoint");
-  files.integer("checkpoint_every", &file_settings::checkpoint_every, "steps between checkpoints (0: none)").at_least(0);
+  files.integer("checkpoint_every", &file_settings::checkpoint_every, "steps between checkpoints (0: none)")
+    .at_least(0);
   files.file("restart_file", &file_settings::restart_file,
              "continue the run saved in this checkpoint (none: start at t = 0)");
   files.file("initial_data", &file_settings::initial_data,
-             "H5Part file or SWIFT-format initial conditions (Header, PartType0) of the initial particles (none: the problem's own)");
+             "H5Part file or SWIFT-format initial conditions (Header, PartType0) of the initial particles (none: the "
+             "problem's own)");
   files.integer("initial_data_step", &file_settings::initial_data_step, "Step#k of initial_data to read (-1: the last)")
     .at_least(-1);
   files.check([](const file_settings& f) {
@@ -80,8 +83,9 @@ runtime::parameter_block<file_settings> file_parameters(const file_settings& def
     // checkpoint_file = restart_file is allowed: the checkpoint is read whole at start-up, and a
     // new one replaces it only by an atomic rename once complete (a run continued in chunks).
     if (!f.restart_file.empty() && !f.initial_data.empty())
-      throw parameter_error("restart_file and initial_data are both set: a restart continues "
-                            "the checkpoint's particles; set only one of them");
+      throw parameter_error(
+        "restart_file and initial_data are both set: a restart continues "
+        "the checkpoint's particles; set only one of them");
     if (f.checkpoint_every > 0 && f.checkpoint_file.empty())
       throw parameter_error("checkpoint_every = " + std::to_string(f.checkpoint_every) +
                             " needs a checkpoint_file (it is none)");
@@ -89,4 +93,4 @@ runtime::parameter_block<file_settings> file_parameters(const file_settings& def
   return files;
 }
 
-} // namespace flecsi_lite::app
+}  // namespace flecsi_lite::app

@@ -34,4 +34,4 @@ runtime::parameter_block<file_settings> file_parameters(const file_settings& def
 /// replace or corrupt the other. Every collision check of the frame's file keys uses it.
 bool names_same_file(const std::string& a, const std::string& b);
 
-} // namespace flecsi_lite::app
+}  // namespace flecsi_lite::app

@@ -55,7 +55,7 @@ runtime::parameter_block<frame_files> frame_file_parameters() {
              "every key of this run with its value, a complete rerun file (auto: <output stem>.used.par)");
   return block;
 }
-} // namespace
+}  // namespace
 
 std::string used_parameters_file(const std::string& program, const runtime::parameters& p) {
   const std::string path = frame_file_parameters().read(p).used_parameters_file;
@@ -129,7 +129,7 @@ std::vector<std::string> overrides_of(const definition& app, const runtime::opti
   for (const auto& assignment : options.all("set")) overrides.push_back(assignment);
   return overrides;
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv, const definition& app) {
   // The schema needs no runtime: its keys give the help of the options that set them.
@@ -140,8 +140,9 @@ int main(int argc, char** argv, const definition& app) {
     .flag("parameters-help", "list every parameter key and exit");
   for (const auto& shortcut : app.option_keys) {
     const runtime::parameter_declaration* key = schema.find(shortcut.key);
-    if (!key) throw std::logic_error(app.program + ": option --" + shortcut.option + " sets no declared key '" +
-                                     shortcut.key + "'");
+    if (!key)
+      throw std::logic_error(app.program + ": option --" + shortcut.option + " sets no declared key '" + shortcut.key +
+                             "'");
     options.value(shortcut.option, "VALUE", key->description() + " (sets " + shortcut.key + ")",
                   key->required() ? "" : runtime::parameter_declaration::format(*key->fallback()));
   }
@@ -173,4 +174,4 @@ int main(int argc, char** argv, const definition& app) {
   }
 }
 
-} // namespace flecsi_lite::app
+}  // namespace flecsi_lite::app

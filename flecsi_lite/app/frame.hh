@@ -61,9 +61,9 @@ struct definition {
 
 /// What a run sees: the resolved parameters and the options.
 class run_context {
-public:
+ public:
   run_context(const definition& app, const runtime::parameters& parameters, const runtime::options& options)
-    : app_(app), parameters_(parameters), options_(options) {}
+      : app_(app), parameters_(parameters), options_(options) {}
 
   const std::string& program() const { return app_.program; }
   const runtime::parameters& parameters() const { return parameters_; }
@@ -92,12 +92,11 @@ public:
     return status;
   }
 
-private:
+ private:
   template<class State, class = void>
   struct has_commit_outputs : std::false_type {};
   template<class State>
-  struct has_commit_outputs<State, std::void_t<decltype(std::declval<State&>().commit_outputs())>>
-    : std::true_type {};
+  struct has_commit_outputs<State, std::void_t<decltype(std::declval<State&>().commit_outputs())>> : std::true_type {};
   template<class State>
   static void commit_outputs(State& state) {
     if constexpr (has_commit_outputs<State>::value) state.commit_outputs();
@@ -134,4 +133,4 @@ runtime::parameter_schema schema_of(const definition& app);
 /// statuses above). Collective.
 int main(int argc, char** argv, const definition& app);
 
-} // namespace flecsi_lite::app
+}  // namespace flecsi_lite::app

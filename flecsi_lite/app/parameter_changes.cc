@@ -16,7 +16,7 @@ std::set<std::string> keys_of(const runtime::parameter_schema& schema) {
   for (const auto& d : schema.declarations()) keys.insert(d.name());
   return keys;
 }
-} // namespace
+}  // namespace
 
 runtime::parameter_block<restart_settings> restart_parameters() {
   runtime::parameter_block<restart_settings> block;
@@ -68,7 +68,8 @@ void require_same_parameters(const std::string& checkpoint, const std::string& b
   std::set<std::string> allowed_keys;
   {
     std::string list = allowed;
-    for (char& c : list) if (c == ',') c = ' ';
+    for (char& c : list)
+      if (c == ',') c = ' ';
     std::istringstream words(list);
     for (std::string word; words >> word;) allowed_keys.insert(word);
   }
@@ -82,9 +83,13 @@ void require_same_parameters(const std::string& checkpoint, const std::string& b
   for (const auto& d : parameter_differences(before, now, free_keys))
     if (!allowed_keys.count(d.key)) listed += "\n  " + d.key + ": checkpoint " + d.before + ", this run " + d.now;
   if (!listed.empty())
-    throw runtime::parameter_error("restart from '" + checkpoint + "': these parameters differ from the checkpoint's "
-                                   "and would change the solution:" + listed + "\nset them as the checkpoint has "
-                                   "them, or allow the change with --set allow_parameter_changes=KEY[,KEY...] (or all)");
+    throw runtime::parameter_error(
+      "restart from '" + checkpoint +
+      "': these parameters differ from the checkpoint's "
+      "and would change the solution:" +
+      listed +
+      "\nset them as the checkpoint has "
+      "them, or allow the change with --set allow_parameter_changes=KEY[,KEY...] (or all)");
 }
 
-} // namespace flecsi_lite::app
+}  // namespace flecsi_lite::app

@@ -39,4 +39,4 @@ std::vector<parameter_difference> parameter_differences(const std::string& befor
 void require_same_parameters(const std::string& checkpoint, const std::string& before, const std::string& now,
                              const std::set<std::string>& free_keys, const std::string& allowed);
 
-} // namespace flecsi_lite::app
+}  // namespace flecsi_lite::app

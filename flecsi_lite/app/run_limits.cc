@@ -15,8 +15,9 @@ namespace flecsi_lite::app {
 
 runtime::parameter_block<run_limits> run_limit_parameters() {
   runtime::parameter_block<run_limits> block;
-  block.real("wall_time_limit", &run_limits::wall_time_limit,
-             "wall seconds after which the run checkpoints and stops (0: none); leave room for the checkpoint")
+  block
+    .real("wall_time_limit", &run_limits::wall_time_limit,
+          "wall seconds after which the run checkpoints and stops (0: none); leave room for the checkpoint")
     .at_least(0);
   block.file("stop_file", &run_limits::stop_file,
              "when this file exists, the run checkpoints and stops (auto: <output stem>.stop; none: off)");
@@ -28,7 +29,7 @@ std::string resolved_stop_file(const run_limits& limits, const std::string& outp
 }
 
 stop_monitor::stop_monitor(double wall_time_limit, std::string stop_file)
-  : wall_time_limit_(wall_time_limit), stop_file_(std::move(stop_file)) {}
+    : wall_time_limit_(wall_time_limit), stop_file_(std::move(stop_file)) {}
 
 std::string stop_monitor::check() const {
   // Rank 0's clock and file system decide; the reason travels as text to every rank.
@@ -53,4 +54,4 @@ std::string stop_monitor::check() const {
   return std::string(text.begin(), text.end());
 }
 
-} // namespace flecsi_lite::app
+}  // namespace flecsi_lite::app

@@ -24,7 +24,7 @@ std::string resolved_stop_file(const run_limits& limits, const std::string& outp
 /// The clock and the stop file of one run. check() is collective: rank 0 looks at the clock and
 /// the file, every rank gets its verdict, so that all stop after the same step.
 class stop_monitor {
-public:
+ public:
   stop_monitor() = default;
   /// The clock runs from now.
   stop_monitor(double wall_time_limit, std::string stop_file);
@@ -35,10 +35,10 @@ public:
   const std::string& stop_file() const { return stop_file_; }
   double wall_time_limit() const { return wall_time_limit_; }
 
-private:
+ private:
   double wall_time_limit_ = 0;
   std::string stop_file_;
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
 
-} // namespace flecsi_lite::app
+}  // namespace flecsi_lite::app

@@ -31,8 +31,7 @@ std::size_t model_structure::add_cycle(const std::string& name, const std::vecto
 action_handle model_structure::add_action(const std::string& point, const std::string& name) {
   const std::size_t p = find_point(point);
   for (auto& a : points_[p].actions)
-    if (a.name == name)
-      throw control_error("action '" + name + "' registered twice on control point '" + point + "'");
+    if (a.name == name) throw control_error("action '" + name + "' registered twice on control point '" + point + "'");
   points_[p].actions.push_back({name, {}, {}});
   points_[p].sequence.push_back(points_[p].actions.size() - 1);
   return {p, points_[p].actions.size() - 1};
@@ -45,8 +44,8 @@ action_handle model_structure::find_action(const std::string& point, const std::
     if (actions[a].name == name) return {p, a};
   std::string known;
   for (auto& a : actions) known += (known.empty() ? "" : ", ") + a.name;
-  throw control_error("no action '" + name + "' on control point '" + point + "' (its actions: " +
-                      (known.empty() ? "none" : known) + ")");
+  throw control_error("no action '" + name + "' on control point '" + point +
+                      "' (its actions: " + (known.empty() ? "none" : known) + ")");
 }
 
 namespace {
@@ -56,7 +55,7 @@ void move_next_to(std::vector<std::size_t>& sequence, std::size_t action, std::s
   const auto at = std::find(sequence.begin(), sequence.end(), anchor);
   sequence.insert(at + static_cast<std::ptrdiff_t>(offset), action);
 }
-} // namespace
+}  // namespace
 
 action_handle model_structure::placement_anchor(action_handle action, const std::string& anchor_name) const {
   const auto& point = points_[action.point];
@@ -196,4 +195,4 @@ void model_structure::write_graphviz(std::ostream& out, const std::string& title
   out << "}\n";
 }
 
-} // namespace flecsi_lite::control::detail
+}  // namespace flecsi_lite::control::detail

@@ -38,7 +38,7 @@ struct action_handle {
 namespace detail {
 /// The part of the model that does not depend on the state type.
 class model_structure {
-public:
+ public:
   struct action_info {
     std::string name;
     std::vector<std::size_t> after;  // indices of actions of the same point
@@ -81,20 +81,20 @@ public:
   const std::vector<cycle_info>& cycles() const { return cycles_; }
   std::size_t find_point(const std::string& name) const;
 
-private:
+ private:
   /// The anchor `action` may be placed next to; throws when it is placed already or is the anchor.
   action_handle placement_anchor(action_handle action, const std::string& anchor_name) const;
 
   std::vector<point_info> points_;
   std::vector<cycle_info> cycles_;
 };
-} // namespace detail
+}  // namespace detail
 
 /// What control_model::action returns: the new action's handle (it converts to action_handle),
 /// which may still be placed once, relative to a named action of the same control point. Use it
 /// at once: it refers to its model.
 class new_action {
-public:
+ public:
   new_action(detail::model_structure& structure, action_handle handle) : structure_(&structure), handle_(handle) {}
   operator action_handle() const { return handle_; }
   /// Runs right after `anchor`, before every action that depended on the anchor.
@@ -108,14 +108,14 @@ public:
     return handle_;
   }
 
-private:
+ private:
   detail::model_structure* structure_;
   action_handle handle_;
 };
 
 template<class State>
 class control_model {
-public:
+ public:
   using action_function = std::function<void(State&)>;
   using predicate = std::function<bool(const State&)>;
   /// Called before every action that runs, with its control point and name (tracing, tests).
@@ -183,8 +183,8 @@ public:
       std::ofstream out(settings.control_model_file);
       write_graphviz(out, settings.program);
       if (!out) throw control_error("cannot write " + settings.control_model_file);
-      std::cout << "control model written to " << settings.control_model_file
-                << " (render: dot -Tpng " << settings.control_model_file << " -o model.png)\n";
+      std::cout << "control model written to " << settings.control_model_file << " (render: dot -Tpng "
+                << settings.control_model_file << " -o model.png)\n";
     }
     return 0;
   }
@@ -208,7 +208,7 @@ public:
     }
   }
 
-private:
+ private:
   void run_point(std::size_t p, const std::vector<std::size_t>& order, State& state) const {
     if (p >= functions_.size()) return;
     const auto& point = structure_.points()[p];
@@ -224,4 +224,4 @@ private:
   observer observer_;
 };
 
-} // namespace flecsi_lite::control
+}  // namespace flecsi_lite::control

@@ -32,12 +32,13 @@ class accessor {
   template<privilege P>
   using region_element = std::conditional_t<writes(P), T, const T>;
 
-public:
+ public:
   using value_type = T;
   /// Of f(i): writable only when each region it spans is writable.
-  using element = std::conditional_t<Ghost == na, region_element<Owned>,
-                                     std::conditional_t<Owned == na, region_element<Ghost>,
-                                                        std::conditional_t<writes(Owned) && writes(Ghost), T, const T>>>;
+  using element =
+    std::conditional_t<Ghost == na, region_element<Owned>,
+                       std::conditional_t<Owned == na, region_element<Ghost>,
+                                          std::conditional_t<writes(Owned) && writes(Ghost), T, const T>>>;
   using owned_element = region_element<Owned>;
   using ghost_element = region_element<Ghost>;
   using view_type = typename data::field_storage<T>::view_type;
@@ -46,7 +47,7 @@ public:
 
   accessor() = default;
   accessor(view_type view, std::size_t owned, std::size_t ghosts, const std::string* name = nullptr)
-    : view_(view), owned_(owned), size_(owned + (Ghost == na ? 0 : ghosts)), name_(name) {}
+      : view_(view), owned_(owned), size_(owned + (Ghost == na ? 0 : ghosts)), name_(name) {}
 
   /// Entity i of the span [0, size()) (local index: owned first, then ghosts).
   KOKKOS_INLINE_FUNCTION element& operator()(std::size_t i) const {
@@ -89,7 +90,7 @@ public:
   /// The field's name (for messages), when the accessor was made from a field.
   const std::string* name() const { return name_; }
 
-private:
+ private:
   [[noreturn]] void fail(std::size_t i) const {
     data::detail::access_outside_privileges(name_, i, owned_, size_, Owned, Ghost);
   }
@@ -102,7 +103,7 @@ private:
 /// A field bound to one topology instance; what execute() takes as an argument.
 template<class T, class Topo>
 class field_reference {
-public:
+ public:
   using value_type = T;
   using topology_type = Topo;
   field_reference(Topo& topology, std::size_t id) : topology_(&topology), id_(id) {}
@@ -118,7 +119,7 @@ public:
     return {values.view(), topology_->owned_size(), topology_->ghost_size(), &values.name()};
   }
 
-private:
+ private:
   Topo* topology_;
   std::size_t id_;
 };
@@ -135,9 +136,9 @@ struct field {
   /// the field lives in memory only).
   template<class Topo>
   class definition {
-  public:
+   public:
     explicit definition(std::string name, data::persistence persistence = {})
-      : id_(data::registered_fields<Topo>().size()) {
+        : id_(data::registered_fields<Topo>().size()) {
       auto entry = data::make_registered_field<T>(std::move(name), std::move(persistence));
       data::registered_fields<Topo>().push_back(std::move(entry));
     }
@@ -146,9 +147,9 @@ struct field {
     const std::string& name() const { return data::registered_fields<Topo>()[id_].name; }
     const data::persistence& persistence() const { return data::registered_fields<Topo>()[id_].persistence; }
 
-  private:
+   private:
     std::size_t id_;
   };
 };
 
-} // namespace flecsi_lite
+}  // namespace flecsi_lite

@@ -30,7 +30,7 @@ struct component_read {
   int component;
   std::optional<value_buffer> values;
 };
-} // namespace
+}  // namespace
 
 std::string describe_step(const io::h5part_reader& in, std::int64_t step) {
   return "'" + in.path() + "' Step#" + std::to_string(step);
@@ -46,8 +46,10 @@ void write_registered_fields(topology_base& topology, const std::vector<register
     const int written = f.persistence.is_padded() ? static_cast<int>(f.datasets.size()) : f.components;
     for (int k = 0; k < written; ++k) {
       value_buffer values = f.no_values();
-      if (k < f.components) values = f.owned_values(topology, id, f.name, k);
-      else std::visit([n](auto& zeros) { zeros.assign(n, 0); }, values);
+      if (k < f.components)
+        values = f.owned_values(topology, id, f.name, k);
+      else
+        std::visit([n](auto& zeros) { zeros.assign(n, 0); }, values);
       std::visit([&](const auto& v) { out.write(f.datasets[k], v.data(), v.size()); }, values);
     }
   }
@@ -77,7 +79,8 @@ void read_registered_fields(topology_base& topology, const std::vector<registere
       component_read r{id, k, std::nullopt};
       if (required || in.has_column(name)) {
         // Checked values are read as reals, as the rule sees them; the others in their own type.
-        if (f.persistence.rule()) r.values = read_converted<double>(in, name);
+        if (f.persistence.rule())
+          r.values = read_converted<double>(in, name);
         else
           r.values = std::visit(
             [&](const auto& empty) -> value_buffer {
@@ -113,4 +116,4 @@ void read_registered_fields(topology_base& topology, const std::vector<registere
   }
 }
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

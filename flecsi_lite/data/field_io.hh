@@ -32,12 +32,18 @@ template<class T>
 std::vector<T> read_converted(const io::column_source& in, const std::string& name) {
   const auto convert = [](const auto& values) { return std::vector<T>(values.begin(), values.end()); };
   switch (in.column_type(name)) {
-  case io::element_type::float64: return convert(in.read<double>(name));
-  case io::element_type::float32: return convert(in.read<float>(name));
-  case io::element_type::int64: return convert(in.read<std::int64_t>(name));
-  case io::element_type::uint64: return convert(in.read<std::uint64_t>(name));
-  case io::element_type::int32: return convert(in.read<std::int32_t>(name));
-  default: break;
+    case io::element_type::float64:
+      return convert(in.read<double>(name));
+    case io::element_type::float32:
+      return convert(in.read<float>(name));
+    case io::element_type::int64:
+      return convert(in.read<std::int64_t>(name));
+    case io::element_type::uint64:
+      return convert(in.read<std::uint64_t>(name));
+    case io::element_type::int32:
+      return convert(in.read<std::int32_t>(name));
+    default:
+      break;
   }
   throw io::element_type_error(in.where() + " dataset '" + name +
                                "' is not numeric (float64, float32, int64, uint64 or int32)");
@@ -77,4 +83,4 @@ void read_fields(Topo& topology, const io::column_source& in, role which) {
   read_registered_fields(topology, registered_fields<Topo>(), in, which);
 }
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

@@ -86,7 +86,7 @@ template<class T>
 value_buffer no_values() {
   return std::vector<typename components_of<T>::element>();
 }
-} // namespace detail
+}  // namespace detail
 
 /// A field as the registry of its topology type holds it.
 struct registered_field {
@@ -131,4 +131,4 @@ registered_field make_registered_field(std::string name, data::persistence persi
   return f;
 }
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

@@ -15,7 +15,7 @@
 namespace flecsi_lite::data {
 
 class field_storage_base {
-public:
+ public:
   explicit field_storage_base(std::string name) : name_(std::move(name)) {}
   virtual ~field_storage_base() = default;
 
@@ -34,7 +34,7 @@ public:
   /// Copies `count` elements from `in` to positions first, first+1, ...
   virtual void unpack(const std::byte* in, std::size_t first, std::size_t count) = 0;
 
-private:
+ private:
   std::string name_;
 };
 
@@ -60,11 +60,11 @@ template<class T>
 class field_storage final : public field_storage_base {
   static_assert(std::is_trivially_copyable_v<T>, "field values are copied as bytes");
 
-public:
+ public:
   using view_type = Kokkos::View<T*, memory_space>;
 
   field_storage(std::string name, std::size_t n)
-    : field_storage_base(std::move(name)), view_(Kokkos::view_alloc(this->name()), n) {}
+      : field_storage_base(std::move(name)), view_(Kokkos::view_alloc(this->name()), n) {}
 
   view_type view() const { return view_; }
   std::size_t element_size() const override { return sizeof(T); }
@@ -80,8 +80,9 @@ public:
     view_type result(Kokkos::view_alloc(Kokkos::WithoutInitializing, name()), count + tail);
     auto source = view_;
     const std::size_t* o = order.data();
-    Kokkos::parallel_for("flecsi_lite::gather", Kokkos::RangePolicy<execution_space>(0, count + tail),
-                         KOKKOS_LAMBDA(std::size_t i) { result(i) = i < count ? source(o[i]) : T{}; });
+    Kokkos::parallel_for(
+      "flecsi_lite::gather", Kokkos::RangePolicy<execution_space>(0, count + tail),
+      KOKKOS_LAMBDA(std::size_t i) { result(i) = i < count ? source(o[i]) : T{}; });
     Kokkos::fence();
     view_ = result;
   }
@@ -95,8 +96,8 @@ public:
     if (count) std::memcpy(view_.data() + first, in, count * sizeof(T));
   }
 
-private:
+ private:
   view_type view_;
 };
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

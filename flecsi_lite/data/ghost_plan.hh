@@ -21,4 +21,4 @@ struct ghost_plan {
   bool empty() const { return peers.empty(); }
 };
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

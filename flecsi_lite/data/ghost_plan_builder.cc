@@ -58,4 +58,4 @@ ghost_plan build_ghost_plan(const std::vector<int>& ghost_owner, const std::vect
   return plan;
 }
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

@@ -19,4 +19,4 @@ namespace flecsi_lite::data {
 ghost_plan build_ghost_plan(const std::vector<int>& ghost_owner, const std::vector<std::uint64_t>& ghost_id,
                             const std::function<std::size_t(std::uint64_t)>& owned_index_of, MPI_Comm comm);
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

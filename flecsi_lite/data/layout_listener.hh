@@ -10,7 +10,7 @@
 namespace flecsi_lite::data {
 
 class layout_listener {
-public:
+ public:
   virtual ~layout_listener() = default;
   virtual void before_layout_change(std::uint64_t topology_id) = 0;
   virtual void after_layout_change(std::uint64_t topology_id) = 0;
@@ -22,4 +22,4 @@ public:
 void set_layout_listener(layout_listener* listener);
 layout_listener* current_layout_listener();
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

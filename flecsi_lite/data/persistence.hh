@@ -71,7 +71,7 @@ enum class initial_reading {
 
 /// A field's persistence, built by chaining: persist::as("vx", "vy", "vz").padded().output().
 class persistence {
-public:
+ public:
   persistence() = default;
 
   /// The dataset name of each component (default: the field's name for a scalar, name_0, name_1,
@@ -83,9 +83,15 @@ public:
     return p;
   }
   /// Also writes zeros under the dataset names beyond the field's components.
-  persistence padded() const { return with([](persistence& p) { p.padded_ = true; }); }
-  persistence output() const { return with([](persistence& p) { p.roles_ = p.roles_ | role::output; }); }
-  persistence restart() const { return with([](persistence& p) { p.roles_ = p.roles_ | role::restart; }); }
+  persistence padded() const {
+    return with([](persistence& p) { p.padded_ = true; });
+  }
+  persistence output() const {
+    return with([](persistence& p) { p.roles_ = p.roles_ | role::output; });
+  }
+  persistence restart() const {
+    return with([](persistence& p) { p.roles_ = p.roles_ | role::restart; });
+  }
   persistence initial_required(value_rule rule = {}) const {
     return initial(initial_reading::required, std::move(rule));
   }
@@ -111,7 +117,7 @@ public:
     return names;
   }
 
-private:
+ private:
   template<class Change>
   persistence with(Change change) const {
     persistence p = *this;
@@ -133,7 +139,7 @@ private:
   value_rule rule_;
 };
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data
 
 namespace flecsi_lite::persist {
 /// Entry points of the chain: persist::output().restart(), persist::as("m").output(), ...
@@ -153,4 +159,4 @@ using data::at_least;
 using data::must_be_finite;
 using data::must_be_positive;
 using data::one_of;
-} // namespace flecsi_lite::persist
+}  // namespace flecsi_lite::persist

@@ -15,10 +15,8 @@ enum privilege : unsigned char {
 
 constexpr bool reads(privilege p) { return p == ro || p == rw; }
 constexpr bool writes(privilege p) { return p == wo || p == rw; }
-constexpr const char* privilege_name(privilege p) {
-  return p == na ? "na" : p == ro ? "ro" : p == wo ? "wo" : "rw";
-}
+constexpr const char* privilege_name(privilege p) { return p == na ? "na" : p == ro ? "ro" : p == wo ? "wo" : "rw"; }
 
 enum class region : unsigned char { owned = 0, ghost = 1 };
 
-} // namespace flecsi_lite
+}  // namespace flecsi_lite

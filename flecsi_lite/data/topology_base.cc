@@ -9,7 +9,7 @@ namespace flecsi_lite::data {
 namespace {
 std::atomic<std::uint64_t> next_instance_id{1};
 layout_listener* listener = nullptr;
-} // namespace
+}  // namespace
 
 std::uint64_t new_instance_id() { return next_instance_id++; }
 void set_layout_listener(layout_listener* l) { listener = l; }
@@ -50,4 +50,4 @@ void topology_base::layout_changed() {
   if (listener) listener->after_layout_change(instance_id_);
 }
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

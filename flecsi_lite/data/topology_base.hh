@@ -16,7 +16,7 @@
 namespace flecsi_lite::data {
 
 class topology_base {
-public:
+ public:
   topology_base();
   topology_base(const topology_base&) = delete;
   topology_base& operator=(const topology_base&) = delete;
@@ -43,7 +43,7 @@ public:
   /// Every field storage created so far (null entries for fields never used on this instance).
   const std::vector<std::unique_ptr<field_storage_base>>& storages() const { return storages_; }
 
-protected:
+ protected:
   // These first wait for every pending task (fields change under them), then change the layout
   // of every field at once.
 
@@ -53,7 +53,7 @@ protected:
   void reorder_owned(const std::vector<std::size_t>& order, std::size_t ghosts);
   void set_plan(ghost_plan plan);
 
-private:
+ private:
   void layout_changed();
 
   std::uint64_t instance_id_;
@@ -63,4 +63,4 @@ private:
   std::vector<std::unique_ptr<field_storage_base>> storages_;
 };
 
-} // namespace flecsi_lite::data
+}  // namespace flecsi_lite::data

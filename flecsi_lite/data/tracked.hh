@@ -22,14 +22,14 @@ namespace flecsi_lite {
 namespace data {
 /// A fresh identity for the executor's bookkeeping (shared with topology instances).
 std::uint64_t new_instance_id();
-} // namespace data
+}  // namespace data
 
 /// What a task sees of a tracked object: a const reference with ro, a mutable one with wo / rw.
 template<class T, privilege P>
 class tracked_accessor {
   static_assert(P != na, "a task that does not use a tracked object takes no accessor to it");
 
-public:
+ public:
   using value_type = T;
   using element = std::conditional_t<writes(P), T, const T>;
   static constexpr privilege object_privilege = P;
@@ -38,21 +38,21 @@ public:
   element& operator*() const { return *value_; }
   element* operator->() const { return value_; }
 
-private:
+ private:
   element* value_;
 };
 
 /// Owns a T that tasks reach only through accessors; host() is the way in outside tasks.
 template<class T>
 class tracked {
-public:
+ public:
   using value_type = T;
   template<privilege P>
   using accessor = tracked_accessor<T, P>;
 
   template<class... Args>
   explicit tracked(std::string name, Args&&... args)
-    : value_(std::forward<Args>(args)...), name_(std::move(name)), id_(data::new_instance_id()) {}
+      : value_(std::forward<Args>(args)...), name_(std::move(name)), id_(data::new_instance_id()) {}
   tracked(const tracked&) = delete;
   tracked& operator=(const tracked&) = delete;
   ~tracked() {
@@ -75,7 +75,7 @@ public:
   T& launch_value() { return value_; }
   const T& launch_value() const { return value_; }
 
-private:
+ private:
   void wait_for_tasks() const {
     if (auto* listener = data::current_layout_listener()) listener->before_host_access(id_);
   }
@@ -85,4 +85,4 @@ private:
   std::uint64_t id_;
 };
 
-} // namespace flecsi_lite
+}  // namespace flecsi_lite

@@ -92,8 +92,7 @@ struct binder {  // copy, at launch
 template<class Param, class Arg>
 struct binder<Param, Arg,
               std::enable_if_t<std::is_lvalue_reference_v<Param> && shared_argument_v<Arg> &&
-                               !is_field_reference<std::decay_t<Arg>>::value &&
-                               !is_tracked<std::decay_t<Arg>>::value &&
+                               !is_field_reference<std::decay_t<Arg>>::value && !is_tracked<std::decay_t<Arg>>::value &&
                                !is_future<std::decay_t<Arg>>::value>> {  // by reference
   static_assert(std::is_lvalue_reference_v<Arg>, "a shared argument is passed as itself, not as a temporary");
   static_assert(std::is_const_v<std::remove_reference_t<Param>> || !std::is_const_v<std::remove_reference_t<Arg>>,
@@ -116,8 +115,7 @@ struct binder<Param, Arg, std::enable_if_t<is_field_reference<std::decay_t<Arg>>
   explicit binder(Arg&& a) : ref(a) {}
   void collect(collector& c) const {
     c.accesses.push_back({ref.topology().instance_id(), &ref.topology(), ref.id(), &ref.storage(),
-                          accessor_type::owned_privilege,
-                          accessor_type::ghost_privilege});
+                          accessor_type::owned_privilege, accessor_type::ghost_privilege});
   }
   accessor_type get() {
     return ref.template make_accessor<accessor_type::owned_privilege, accessor_type::ghost_privilege>();
@@ -168,7 +166,7 @@ auto prepare(Args&&... args) {
   return std::make_pair(binders, std::move(c));
 }
 
-} // namespace execution::detail
+}  // namespace execution::detail
 
 /// Launches task F; returns a future of its result.
 template<auto F, class... Args>
@@ -184,10 +182,9 @@ auto execute(Args&&... args) {
     return future<void>(l);
   } else {
     auto value = std::make_shared<std::optional<result>>();
-    auto l = ex.record(name, execution::launch_kind::task, c.accesses, std::move(c.after),
-                       [b = binders, value](execution::launch&) {
-                         *value = std::apply([](auto&... a) { return F(a.get()...); }, *b);
-                       });
+    auto l = ex.record(
+      name, execution::launch_kind::task, c.accesses, std::move(c.after),
+      [b = binders, value](execution::launch&) { *value = std::apply([](auto&... a) { return F(a.get()...); }, *b); });
     return future<result>(l, value);
   }
 }
@@ -223,8 +220,8 @@ auto reduce(Args&&... args) {
     [buffer](execution::launch& self) {
       buffer->all.resize(runtime::size());
       MPI_Request request;
-      MPI_Iallgather(&buffer->mine, sizeof(transported), MPI_BYTE, buffer->all.data(),
-                     sizeof(transported), MPI_BYTE, runtime::communicator(), &request);
+      MPI_Iallgather(&buffer->mine, sizeof(transported), MPI_BYTE, buffer->all.data(), sizeof(transported), MPI_BYTE,
+                     runtime::communicator(), &request);
       self.requests.push_back(request);
     },
     [buffer, value] {
@@ -245,4 +242,4 @@ auto host_view(const field_reference<T, Topo>& ref) {
   return typename data::field_storage<T>::view_type(ref.storage().view());
 }
 
-} // namespace flecsi_lite
+}  // namespace flecsi_lite

@@ -33,7 +33,7 @@ std::string what_of(const std::exception_ptr& error) {
 constexpr int first_copy_tag = 1000, copy_tag_count = 30000;
 // Launches recorded ahead of execution before the executor starts running them.
 constexpr std::size_t window = 128;
-} // namespace
+}  // namespace
 
 executor& executor::instance() {
   static executor* the_executor = new executor();  // outlives static destructors and MPI
@@ -92,20 +92,20 @@ void executor::record_ghost_copies(const std::vector<field_access>& accesses, Wa
   for (const auto& a : accesses) {
     field_state& state = fields_[{a.instance, a.field}];
     if (state.ghosts_valid || !wanted(a, state)) continue;
-    auto group = std::find_if(groups.begin(), groups.end(),
-                              [&a](const auto& g) { return g.front()->topology == a.topology; });
-    if (group == groups.end()) groups.push_back({&a});
+    auto group =
+      std::find_if(groups.begin(), groups.end(), [&a](const auto& g) { return g.front()->topology == a.topology; });
+    if (group == groups.end())
+      groups.push_back({&a});
     else if (std::none_of(group->begin(), group->end(), [&a](const field_access* b) { return b->field == a.field; }))
       group->push_back(&a);
   }
   for (const auto& group : groups) record_ghost_copy(group);
 }
 
-launch_ptr executor::record(std::string name, launch_kind kind,
-                            const std::vector<field_access>& accesses, std::vector<launch_ptr> after,
-                            std::function<void(launch&)> start, std::function<void()> finish) {
-  if (inside_launch_)
-    throw std::logic_error("executor: task '" + name + "' launched from inside a running task");
+launch_ptr executor::record(std::string name, launch_kind kind, const std::vector<field_access>& accesses,
+                            std::vector<launch_ptr> after, std::function<void(launch&)> start,
+                            std::function<void()> finish) {
+  if (inside_launch_) throw std::logic_error("executor: task '" + name + "' launched from inside a running task");
   auto l = std::make_shared<launch>();
   l->name = std::move(name);
   l->kind = kind;
@@ -202,8 +202,10 @@ bool executor::ready(launch& l) {
   if (l.kind == launch_kind::reduction && l.collective_index != next_collective_started_) return false;
   const launch* failed = nullptr;
   for (auto& d : l.dependencies) {
-    if (d->state == launch_state::failed) failed = d.get();
-    else if (d->state != launch_state::done) return false;
+    if (d->state == launch_state::failed)
+      failed = d.get();
+    else if (d->state != launch_state::done)
+      return false;
   }
   for (auto& d : l.ordered_after)
     if (!d->finished()) return false;
@@ -302,8 +304,7 @@ bool executor::progress() {
   // Then tasks in program order; stop after one if communication waits to start, so that it
   // starts as soon as its inputs are ready.
   bool communication_waiting = false;
-  for (auto& l : queue_)
-    communication_waiting |= l->communicates() && l->state == launch_state::recorded;
+  for (auto& l : queue_) communication_waiting |= l->communicates() && l->state == launch_state::recorded;
   for (auto& l : queue_) {
     if (!l->communicates() && ready(*l)) {
       begin(l);
@@ -354,8 +355,7 @@ void executor::block_until_any_request() {
         all.push_back(l->requests[i]);
         owner.emplace_back(l.get(), i);
       }
-  if (all.empty())
-    throw std::logic_error("executor: no launch is ready and none is in flight (dependency cycle?)");
+  if (all.empty()) throw std::logic_error("executor: no launch is ready and none is in flight (dependency cycle?)");
   int index = MPI_UNDEFINED;
   MPI_Waitany(static_cast<int>(all.size()), all.data(), &index, MPI_STATUS_IGNORE);
   if (index != MPI_UNDEFINED) owner[index].first->requests[owner[index].second] = all[index];
@@ -367,9 +367,10 @@ void executor::wait(const launch& target) {
     if (!progress()) block_until_any_request();
   if (target.state != launch_state::failed) return;
   // Reported through this future: the failure it follows is no longer unobserved.
-  unobserved_.erase(std::remove_if(unobserved_.begin(), unobserved_.end(),
-                                   [&target](const launch_ptr& f) { return f->failure_origin == target.failure_origin; }),
-                    unobserved_.end());
+  unobserved_.erase(
+    std::remove_if(unobserved_.begin(), unobserved_.end(),
+                   [&target](const launch_ptr& f) { return f->failure_origin == target.failure_origin; }),
+    unobserved_.end());
   std::rethrow_exception(target.error);
 }
 
@@ -396,4 +397,4 @@ void executor::topology_destroyed(std::uint64_t topology_id) {
     it = it->first.first == topology_id ? fields_.erase(it) : std::next(it);
 }
 
-} // namespace flecsi_lite::execution
+}  // namespace flecsi_lite::execution

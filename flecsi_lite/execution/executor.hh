@@ -53,7 +53,7 @@ struct field_access {
 };
 
 class executor final : public data::layout_listener {
-public:
+ public:
   static executor& instance();
 
   /// Records a launch; `start` runs when its dependencies (derived from `accesses`, plus
@@ -70,7 +70,10 @@ public:
   /// and posts copies that became ready. True while some communication is in flight.
   bool poll();
   /// Forgets the failures seen so far (a program that caught them on every rank and goes on).
-  void forgive_failures() { failures_ = 0; unobserved_.clear(); }
+  void forgive_failures() {
+    failures_ = 0;
+    unobserved_.clear();
+  }
 
   std::size_t pending() const { return queue_.size(); }
   /// Whether some ghost copy or collective has posted requests that have not completed.
@@ -92,7 +95,7 @@ public:
   void topology_destroyed(std::uint64_t topology_id) override;
   void before_host_access(std::uint64_t) override { wait_all(); }
 
-private:
+ private:
   executor();
   ~executor() override;
 
@@ -132,7 +135,7 @@ private:
   void block_until_any_request();
   double now() const;
 
-  std::deque<launch_ptr> queue_;          // recorded, not done, in program order
+  std::deque<launch_ptr> queue_;  // recorded, not done, in program order
   std::map<field_key, field_state> fields_;
   std::uint64_t next_sequence_ = 0;
   std::uint64_t next_collective_recorded_ = 0, next_collective_started_ = 0;
@@ -140,11 +143,11 @@ private:
   ghost_traffic traffic_;
   bool tracing_ = false;
   bool inside_launch_ = false, polling_ = false;
-  std::size_t failures_ = 0;                 // failed launches (their own exception)
-  std::vector<launch_ptr> unobserved_;       // failures no future's get() has reported
+  std::size_t failures_ = 0;            // failed launches (their own exception)
+  std::vector<launch_ptr> unobserved_;  // failures no future's get() has reported
   std::string first_failure_;
   std::vector<trace_event> trace_;
   std::chrono::steady_clock::time_point epoch_;
 };
 
-} // namespace flecsi_lite::execution
+}  // namespace flecsi_lite::execution

@@ -86,7 +86,7 @@ void reduce_polling(std::size_t n, Reducer reducer, const Run& run) {
     run(0, count, reducer);
   }
 }
-} // namespace detail
+}  // namespace detail
 
 /// body(i) for i in [0, n), the range split evenly among the threads.
 template<class Body>
@@ -112,14 +112,12 @@ void forall(std::size_t n, const Body& body, const char* name, dynamic_schedule 
 
 /// body(i, partial) for i in [0, n), combined into `reducer` (Kokkos::Sum, Min, Max, ...).
 template<class Reducer, class Body>
-void forall_reduce(std::size_t n, const Body& body, Reducer reducer,
-                   const char* name = "flecsi_lite::forall_reduce") {
+void forall_reduce(std::size_t n, const Body& body, Reducer reducer, const char* name = "flecsi_lite::forall_reduce") {
   detail::reduce_polling(n, reducer, [&](std::int64_t begin, std::int64_t end, Reducer part) {
-    Kokkos::parallel_reduce(name, detail::even_policy(begin, end),
-                            [&body](std::int64_t i, typename Reducer::value_type& partial) {
-                              body(static_cast<std::size_t>(i), partial);
-                            },
-                            part);
+    Kokkos::parallel_reduce(
+      name, detail::even_policy(begin, end),
+      [&body](std::int64_t i, typename Reducer::value_type& partial) { body(static_cast<std::size_t>(i), partial); },
+      part);
   });
 }
 
@@ -128,11 +126,10 @@ void forall_reduce(std::size_t n, const Body& body, Reducer reducer,
 template<class Reducer, class Body>
 void forall_reduce(std::size_t n, const Body& body, Reducer reducer, const char* name, dynamic_schedule schedule) {
   detail::reduce_polling(n, reducer, [&](std::int64_t begin, std::int64_t end, Reducer part) {
-    Kokkos::parallel_reduce(name, detail::make_policy(begin, end, schedule),
-                            [&body](std::int64_t i, typename Reducer::value_type& partial) {
-                              body(static_cast<std::size_t>(i), partial);
-                            },
-                            part);
+    Kokkos::parallel_reduce(
+      name, detail::make_policy(begin, end, schedule),
+      [&body](std::int64_t i, typename Reducer::value_type& partial) { body(static_cast<std::size_t>(i), partial); },
+      part);
   });
 }
 
@@ -153,4 +150,4 @@ T exclusive_scan(T* values, std::size_t n, const char* name = "flecsi_lite::excl
   return total;
 }
 
-} // namespace flecsi_lite
+}  // namespace flecsi_lite

@@ -12,11 +12,11 @@ namespace flecsi_lite {
 
 template<class T>
 class future {
-public:
+ public:
   using value_type = T;
   future() = default;
   future(execution::launch_ptr l, std::shared_ptr<std::optional<T>> value)
-    : launch_(std::move(l)), value_(std::move(value)) {}
+      : launch_(std::move(l)), value_(std::move(value)) {}
 
   bool ready() const { return !launch_ || launch_->finished(); }
   /// False for a default-constructed future (no launch will give it a value).
@@ -32,14 +32,14 @@ public:
   /// The value of a launch known to be done (what tasks receive for a future argument).
   const T& value() const { return **value_; }
 
-private:
+ private:
   execution::launch_ptr launch_;
   std::shared_ptr<std::optional<T>> value_;
 };
 
 template<>
 class future<void> {
-public:
+ public:
   using value_type = void;
   future() = default;
   explicit future(execution::launch_ptr l) : launch_(std::move(l)) {}
@@ -50,7 +50,7 @@ public:
   void get() const { wait(); }
   const execution::launch_ptr& launch() const { return launch_; }
 
-private:
+ private:
   execution::launch_ptr launch_;
 };
 
@@ -59,4 +59,4 @@ struct is_future : std::false_type {};
 template<class T>
 struct is_future<future<T>> : std::true_type {};
 
-} // namespace flecsi_lite
+}  // namespace flecsi_lite

@@ -34,10 +34,10 @@ std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
       auto& receive = (*receive_buffers)[p];
       receive.resize(peer.receive_count * bytes);
       MPI_Request requests[2];
-      MPI_Irecv(receive.data(), static_cast<int>(receive.size()), MPI_BYTE, peer.rank, tag,
-                runtime::communicator(), &requests[0]);
-      MPI_Isend(send.data(), static_cast<int>(send.size()), MPI_BYTE, peer.rank, tag,
-                runtime::communicator(), &requests[1]);
+      MPI_Irecv(receive.data(), static_cast<int>(receive.size()), MPI_BYTE, peer.rank, tag, runtime::communicator(),
+                &requests[0]);
+      MPI_Isend(send.data(), static_cast<int>(send.size()), MPI_BYTE, peer.rank, tag, runtime::communicator(),
+                &requests[1]);
       self.requests.insert(self.requests.end(), requests, requests + 2);
       ++traffic->messages_sent;
       traffic->bytes_sent += send.size();
@@ -68,4 +68,4 @@ void report_ghost_traffic(const ghost_traffic& traffic, std::ostream& out) {
       << hi[1] << "\n";
 }
 
-} // namespace flecsi_lite::execution::detail
+}  // namespace flecsi_lite::execution::detail

@@ -24,12 +24,12 @@ struct launch {
   std::string name;
   launch_kind kind = launch_kind::task;
   launch_state state = launch_state::recorded;
-  std::vector<std::shared_ptr<launch>> dependencies;  // must be done: their results are read
+  std::vector<std::shared_ptr<launch>> dependencies;   // must be done: their results are read
   std::vector<std::shared_ptr<launch>> ordered_after;  // must be finished (done or failed)
   std::vector<std::shared_ptr<launch>> started;        // must have started (a copy has packed)
-  std::vector<std::uint64_t> dependency_sequences;    // for the trace (critical path)
-  std::function<void(launch&)> start;  // runs the task, or packs and posts the requests
-  std::function<void()> finish;        // after the requests complete: unpack, combine
+  std::vector<std::uint64_t> dependency_sequences;     // for the trace (critical path)
+  std::function<void(launch&)> start;                  // runs the task, or packs and posts the requests
+  std::function<void()> finish;                        // after the requests complete: unpack, combine
   std::vector<MPI_Request> requests;
   std::uint64_t collective_index = 0;  // reductions start in program order on every rank
   double begin_time = 0, end_time = 0;
@@ -43,4 +43,4 @@ struct launch {
 
 using launch_ptr = std::shared_ptr<launch>;
 
-} // namespace flecsi_lite::execution
+}  // namespace flecsi_lite::execution

@@ -11,15 +11,21 @@ namespace flecsi_lite::reduction {
 
 struct sum {
   template<class T>
-  static T combine(const T& a, const T& b) { return a + b; }
+  static T combine(const T& a, const T& b) {
+    return a + b;
+  }
 };
 struct min {
   template<class T>
-  static T combine(const T& a, const T& b) { return std::min(a, b); }
+  static T combine(const T& a, const T& b) {
+    return std::min(a, b);
+  }
 };
 struct max {
   template<class T>
-  static T combine(const T& a, const T& b) { return std::max(a, b); }
+  static T combine(const T& a, const T& b) {
+    return std::max(a, b);
+  }
 };
 /// Exact sum: a task returns a double (its own exact partial sum, e.g. from util::exact_sum)
 /// or a util::exact_sum accumulator; the result is the double nearest the exact total.
@@ -41,11 +47,13 @@ struct carrier<exact_sum, T> {
   using transported = util::exact_sum;
   using result = double;
   static transported pack(const T& v) {
-    if constexpr (std::is_same_v<T, util::exact_sum>) return v;
-    else return util::exact_sum(static_cast<double>(v));
+    if constexpr (std::is_same_v<T, util::exact_sum>)
+      return v;
+    else
+      return util::exact_sum(static_cast<double>(v));
   }
   static result unpack(const transported& v) { return v.value(); }
 };
-} // namespace detail
+}  // namespace detail
 
-} // namespace flecsi_lite::reduction
+}  // namespace flecsi_lite::reduction

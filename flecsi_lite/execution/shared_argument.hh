@@ -21,4 +21,4 @@ struct shared_argument : std::is_base_of<data::topology_base, T> {};
 template<class T>
 inline constexpr bool shared_argument_v = shared_argument<std::remove_cv_t<std::remove_reference_t<T>>>::value;
 
-} // namespace flecsi_lite::execution
+}  // namespace flecsi_lite::execution

@@ -15,7 +15,8 @@ namespace flecsi_lite::execution {
 std::vector<int> trace_tracks(const std::vector<trace_event>& events) {
   std::vector<std::size_t> order(events.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return events[a].begin < events[b].begin; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return events[a].begin < events[b].begin; });
   std::vector<int> track(events.size(), 0);
   std::vector<double> busy_until;  // of communication tracks 1, 2, ...
   for (std::size_t i : order) {
@@ -43,8 +44,8 @@ void write_chrome_trace(const std::vector<trace_event>& events, std::ostream& ou
          << ",\"args\":{\"name\":\"" << name << "\"}},\n";
   };
   metadata("process_name", 0, "rank " + std::to_string(rank));
-  mine << "{\"name\":\"process_sort_index\",\"ph\":\"M\",\"pid\":" << rank << ",\"tid\":0,\"args\":{\"sort_index\":"
-       << rank << "}},\n";
+  mine << "{\"name\":\"process_sort_index\",\"ph\":\"M\",\"pid\":" << rank
+       << ",\"tid\":0,\"args\":{\"sort_index\":" << rank << "}},\n";
   metadata("thread_name", 0, "compute");
   for (int t = 1; t < std::max(tracks, 2); ++t)
     metadata("thread_name", t, t == 1 ? std::string("communication") : "communication " + std::to_string(t));
@@ -75,4 +76,4 @@ void write_chrome_trace(const std::vector<trace_event>& events, std::ostream& ou
   out << "[\n" << all << "\n]\n";
 }
 
-} // namespace flecsi_lite::execution
+}  // namespace flecsi_lite::execution

@@ -14,8 +14,8 @@ namespace flecsi_lite::execution {
 struct trace_event {
   std::uint64_t sequence;  // program order of the launch
   std::string name;
-  std::string kind;        // "task", "ghost_copy", "reduction"
-  double begin, end;       // seconds since the executor started
+  std::string kind;                         // "task", "ghost_copy", "reduction"
+  double begin, end;                        // seconds since the executor started
   std::vector<std::uint64_t> dependencies;  // sequences of the launches it waited for
 };
 
@@ -26,4 +26,4 @@ std::vector<int> trace_tracks(const std::vector<trace_event>& events);
 /// Writes the events of every rank (gathered to rank 0) as Chrome trace JSON. Collective.
 void write_chrome_trace(const std::vector<trace_event>& events, std::ostream& out);
 
-} // namespace flecsi_lite::execution
+}  // namespace flecsi_lite::execution

@@ -20,15 +20,21 @@ using column = std::variant<std::vector<double>, std::vector<float>, std::vector
 
 column read_column(const h5part_reader& reader, std::int64_t step, const std::string& name, slice all) {
   switch (reader.dataset_type(step, name)) {
-    case element_type::float64: return reader.read<double>(step, name, all);
-    case element_type::float32: return reader.read<float>(step, name, all);
-    case element_type::int64: return reader.read<std::int64_t>(step, name, all);
-    case element_type::uint64: return reader.read<std::uint64_t>(step, name, all);
-    case element_type::int32: return reader.read<std::int32_t>(step, name, all);
-    case element_type::unsupported: break;
+    case element_type::float64:
+      return reader.read<double>(step, name, all);
+    case element_type::float32:
+      return reader.read<float>(step, name, all);
+    case element_type::int64:
+      return reader.read<std::int64_t>(step, name, all);
+    case element_type::uint64:
+      return reader.read<std::uint64_t>(step, name, all);
+    case element_type::int32:
+      return reader.read<std::int32_t>(step, name, all);
+    case element_type::unsupported:
+      break;
   }
-  throw element_type_error("dataset '" + name + "' of step " + std::to_string(step) + " of '" +
-                           reader.path() + "' holds values that cannot be written as numbers");
+  throw element_type_error("dataset '" + name + "' of step " + std::to_string(step) + " of '" + reader.path() +
+                           "' holds values that cannot be written as numbers");
 }
 
 // One field of width 24: a separating space and the value right-aligned in 23 characters.
@@ -46,7 +52,7 @@ void append_value(std::string& row, const column& values, std::size_t i) {
     std::snprintf(text, sizeof text, " %23d", static_cast<int>(std::get<std::vector<std::int32_t>>(values)[i]));
   row += text;
 }
-} // namespace
+}  // namespace
 
 std::vector<std::string> available_columns(const h5part_reader& reader, std::int64_t step,
                                            const std::vector<std::string>& preferred) {
@@ -57,8 +63,8 @@ std::vector<std::string> available_columns(const h5part_reader& reader, std::int
   return chosen.empty() ? present : chosen;
 }
 
-void write_ascii_columns(const h5part_reader& reader, std::int64_t step,
-                         const std::vector<std::string>& columns, std::ostream& out) {
+void write_ascii_columns(const h5part_reader& reader, std::int64_t step, const std::vector<std::string>& columns,
+                         std::ostream& out) {
   const step_info info = reader.step_information(step);
   const slice all{0, reader.particle_count(step)};
   std::vector<column> values;
@@ -67,8 +73,8 @@ void write_ascii_columns(const h5part_reader& reader, std::int64_t step,
   // Splash takes the time from the first number of a header line that contains a '.'.
   char time[40];
   std::snprintf(time, sizeof time, "%.16e", info.time);
-  out << "# " << time << "  is the time of Step#" << step << " (iteration " << info.step
-      << ") in " << reader.path() << '\n';
+  out << "# " << time << "  is the time of Step#" << step << " (iteration " << info.step << ") in " << reader.path()
+      << '\n';
   // Labels right-aligned over their columns (fields of 24 characters), at least 4 spaces apart.
   std::string labels;
   for (const auto& name : columns) {
@@ -87,4 +93,4 @@ void write_ascii_columns(const h5part_reader& reader, std::int64_t step,
   }
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -16,12 +16,12 @@ namespace flecsi_lite::io {
 /// on MPI_COMM_SELF (one process) for large files. Doubles are written with 17 significant
 /// digits (they read back exactly), floats with 9, integers as integers. Throws the reader's
 /// errors for a missing step or column (the latter with the nearest column name).
-void write_ascii_columns(const h5part_reader& reader, std::int64_t step,
-                         const std::vector<std::string>& columns, std::ostream& out);
+void write_ascii_columns(const h5part_reader& reader, std::int64_t step, const std::vector<std::string>& columns,
+                         std::ostream& out);
 
 /// The columns of `preferred` that the step has, in that order; all its datasets (in name
 /// order) when it has none of them.
 std::vector<std::string> available_columns(const h5part_reader& reader, std::int64_t step,
                                            const std::vector<std::string>& preferred);
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -13,4 +13,4 @@ std::string to_string(const attribute_value& value) {
   return text;
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

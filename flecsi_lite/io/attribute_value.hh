@@ -29,8 +29,7 @@ std::string to_string(const attribute_value& value);
 template<class T>
 T attribute_as(const attribute_value& value, const std::string& what) {
   const auto mismatch = [&](const char* wanted) {
-    return element_type_error(what + " is " + attribute_kind(value) + " " + to_string(value) +
-                              ", not " + wanted);
+    return element_type_error(what + " is " + attribute_kind(value) + " " + to_string(value) + ", not " + wanted);
   };
   if constexpr (std::is_same_v<T, std::string>) {
     if (auto* s = std::get_if<std::string>(&value)) return *s;
@@ -42,10 +41,11 @@ T attribute_as(const attribute_value& value, const std::string& what) {
   } else {
     static_assert(std::is_integral_v<T>, "attributes convert to integers, reals or strings");
     if (auto* i = std::get_if<std::int64_t>(&value)) {
-      const bool fits = std::is_signed_v<T>
-        ? *i >= static_cast<std::int64_t>(std::numeric_limits<T>::min()) &&
-            static_cast<std::uint64_t>(*i) <= static_cast<std::uint64_t>(std::numeric_limits<T>::max())
-        : *i >= 0 && static_cast<std::uint64_t>(*i) <= std::numeric_limits<T>::max();
+      const bool fits =
+        std::is_signed_v<T>
+          ? *i >= static_cast<std::int64_t>(std::numeric_limits<T>::min()) &&
+              static_cast<std::uint64_t>(*i) <= static_cast<std::uint64_t>(std::numeric_limits<T>::max())
+          : *i >= 0 && static_cast<std::uint64_t>(*i) <= std::numeric_limits<T>::max();
       if (fits) return static_cast<T>(*i);
       throw element_type_error(what + " = " + std::to_string(*i) + " does not fit the integer type asked for");
     }
@@ -53,4 +53,4 @@ T attribute_as(const attribute_value& value, const std::string& what) {
   }
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

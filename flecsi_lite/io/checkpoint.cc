@@ -11,8 +11,7 @@ void write_checkpoint(const std::string& path, const step_info& info, const run_
                       const std::function<void(h5part_writer&)>& write_arrays, MPI_Comm comm) {
   h5part_writer writer(path, comm);
   writer.set_attribute(checkpoint_marker, std::int64_t{1});
-  for (const auto& [name, value] : state)
-    writer.set_attribute(checkpoint_state_prefix + name, value);
+  for (const auto& [name, value] : state) writer.set_attribute(checkpoint_state_prefix + name, value);
   writer.begin_step(info);
   write_arrays(writer);
   writer.end_step();
@@ -22,8 +21,8 @@ void write_checkpoint(const std::string& path, const step_info& info, const run_
 checkpoint_contents read_checkpoint(const h5part_reader& reader) {
   const auto names = reader.root_attribute_names();
   if (std::find(names.begin(), names.end(), checkpoint_marker) == names.end() || !reader.has_step(0))
-    throw file_error("'" + reader.path() + "' is not a checkpoint (no root attribute '" +
-                     checkpoint_marker + "' or no Step#0)");
+    throw file_error("'" + reader.path() + "' is not a checkpoint (no root attribute '" + checkpoint_marker +
+                     "' or no Step#0)");
   checkpoint_contents contents;
   contents.info = reader.step_information(0);
   const std::string prefix = checkpoint_state_prefix;
@@ -61,4 +60,4 @@ std::optional<std::uint64_t> duplicate_id(const std::uint64_t* ids, std::size_t 
   return twice;
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

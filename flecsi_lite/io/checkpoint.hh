@@ -29,8 +29,7 @@ inline constexpr const char* checkpoint_state_prefix = "state:";
 /// `write_arrays` writes (in their own type: doubles stay doubles), and `state`. An exception
 /// from `write_arrays` (on every rank) leaves the previous file of that name untouched.
 void write_checkpoint(const std::string& path, const step_info& info, const run_state& state,
-                      const std::function<void(h5part_writer&)>& write_arrays,
-                      MPI_Comm comm = runtime::communicator());
+                      const std::function<void(h5part_writer&)>& write_arrays, MPI_Comm comm = runtime::communicator());
 
 struct checkpoint_contents {
   step_info info;
@@ -46,4 +45,4 @@ checkpoint_contents read_checkpoint(const h5part_reader& reader);
 std::optional<std::uint64_t> duplicate_id(const std::uint64_t* ids, std::size_t count,
                                           MPI_Comm comm = runtime::communicator());
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

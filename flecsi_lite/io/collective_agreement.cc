@@ -46,4 +46,4 @@ bool same_on_all_ranks(MPI_Comm comm, std::string_view bytes) {
   return maxima[0] == ~maxima[1];
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -45,4 +45,4 @@ void agree(MPI_Comm comm, Body&& body) {
 /// which is enough to catch ranks that pass different names or values by mistake).
 bool same_on_all_ranks(MPI_Comm comm, std::string_view bytes);
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

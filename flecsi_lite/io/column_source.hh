@@ -23,7 +23,7 @@ namespace flecsi_lite::io {
 class h5part_reader;
 
 class column_source {
-public:
+ public:
   virtual ~column_source() = default;
   /// The file and the place in it, for messages ("'a.h5part' Step#3").
   virtual std::string where() const = 0;
@@ -41,13 +41,13 @@ public:
     return values;
   }
 
-protected:
+ protected:
   virtual void read_column(const std::string& name, slice part, element_type type, void* out) const = 0;
 };
 
 /// Step `step` of an H5Part file: its datasets are the columns.
 class h5part_step_columns final : public column_source {
-public:
+ public:
   h5part_step_columns(const h5part_reader& in, std::int64_t step) : in_(in), step_(step) {}
   std::string where() const override;
   MPI_Comm communicator() const override;
@@ -55,12 +55,12 @@ public:
   bool has_column(const std::string& name) const override;
   element_type column_type(const std::string& name) const override;
 
-protected:
+ protected:
   void read_column(const std::string& name, slice part, element_type type, void* out) const override;
 
-private:
+ private:
   const h5part_reader& in_;
   std::int64_t step_;
 };
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -16,8 +16,10 @@ template<class T>
 constexpr element_type element_type_of() {
   using U = std::remove_cv_t<T>;
   static_assert(!std::is_same_v<U, bool>, "store flags as int32");
-  if constexpr (std::is_floating_point_v<U> && sizeof(U) == 8) return element_type::float64;
-  else if constexpr (std::is_floating_point_v<U> && sizeof(U) == 4) return element_type::float32;
+  if constexpr (std::is_floating_point_v<U> && sizeof(U) == 8)
+    return element_type::float64;
+  else if constexpr (std::is_floating_point_v<U> && sizeof(U) == 4)
+    return element_type::float32;
   else if constexpr (std::is_integral_v<U> && std::is_signed_v<U> && sizeof(U) == 8)
     return element_type::int64;
   else if constexpr (std::is_integral_v<U> && std::is_unsigned_v<U> && sizeof(U) == 8)
@@ -45,4 +47,4 @@ element_type classify(hid_t datatype);
 /// A description of an HDF5 datatype for messages, e.g. "int16" or "string".
 std::string describe_datatype(hid_t datatype);
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

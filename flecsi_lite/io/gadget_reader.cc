@@ -43,7 +43,7 @@ std::vector<hsize_t> extent_of(hid_t dataset, const std::string& what) {
   H5Sget_simple_extent_dims(space.get(), extent.data(), nullptr);
   return extent;
 }
-} // namespace
+}  // namespace
 
 bool gadget_reader::has_gadget_layout(const std::string& path, MPI_Comm comm) {
   int found = 0;
@@ -83,14 +83,12 @@ std::string gadget_reader::text_attribute(const std::string& path, const std::st
   try {
     const auto value = read_attribute(location.get(), name, "attribute " + group + "/" + name + " of '" + path + "'");
     if (const auto* text = std::get_if<std::string>(&value)) return *text;
-  } catch (const io_error&) {
-  }
+  } catch (const io_error&) {}
   return "";
 }
 
-gadget_reader::gadget_reader(std::string path, std::string group, std::map<std::string, column> columns,
-                             MPI_Comm comm)
-  : path_(std::move(path)), group_(std::move(group)), columns_(std::move(columns)), comm_(comm) {
+gadget_reader::gadget_reader(std::string path, std::string group, std::map<std::string, column> columns, MPI_Comm comm)
+    : path_(std::move(path)), group_(std::move(group)), columns_(std::move(columns)), comm_(comm) {
   hdf5_quiet_scope quiet;
   file_ = open_for_reading_collectively(path_, comm_, "a SWIFT snapshot");
   agree(comm_, [&] {
@@ -150,10 +148,12 @@ std::vector<double> gadget_reader::numbers(const std::string& group, const std::
   std::vector<double> values;
   agree(comm_, [&] {
     const std::string what = "attribute " + group + "/" + name + " of '" + path_ + "'";
-    if (!has_link(file_.get(), group)) throw missing_attribute_error("'" + path_ + "' has no group " + group + " (for " + what + ")");
+    if (!has_link(file_.get(), group))
+      throw missing_attribute_error("'" + path_ + "' has no group " + group + " (for " + what + ")");
     if (H5Aexists_by_name(file_.get(), group.c_str(), name.c_str(), H5P_DEFAULT) <= 0)
       throw missing_attribute_error("'" + path_ + "' has no " + what.substr(0, what.find(" of '")));
-    auto attribute = attribute_handle(H5Aopen_by_name(file_.get(), group.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
+    auto attribute =
+      attribute_handle(H5Aopen_by_name(file_.get(), group.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
     auto type = datatype_handle(attribute ? H5Aget_type(attribute.get()) : H5I_INVALID_HID);
     auto space = dataspace_handle(attribute ? H5Aget_space(attribute.get()) : H5I_INVALID_HID);
     if (!type || !space) throw file_error("cannot inspect " + what + hdf5_reason());
@@ -202,8 +202,8 @@ hdf5_handle gadget_reader::open_dataset(const std::string& name) const {
   const auto extent = extent_of(dataset.get(), describe(c.dataset));
   const hsize_t columns = extent.size() == 2 ? extent[1] : 1;
   if (c.component < 0 || static_cast<hsize_t>(c.component) >= columns)
-    throw layout_error(describe(c.dataset) + " has " + std::to_string(columns) + " columns; " + name +
-                       " is column " + std::to_string(c.component));
+    throw layout_error(describe(c.dataset) + " has " + std::to_string(columns) + " columns; " + name + " is column " +
+                       std::to_string(c.component));
   return dataset;
 }
 
@@ -232,15 +232,16 @@ void gadget_reader::read_column(const std::string& name, slice part, element_typ
                                element_type_name(type));
     if (part.offset > count_ || part.count > count_ - part.offset)
       throw slice_error(what + " has " + std::to_string(count_) + " particles; rank " + std::to_string(rank_of(comm_)) +
-                        " asked for [" + std::to_string(part.offset) + ", " + std::to_string(part.offset + part.count) + ")");
+                        " asked for [" + std::to_string(part.offset) + ", " + std::to_string(part.offset + part.count) +
+                        ")");
     file_space = dataspace_handle(H5Dget_space(dataset.get()));
     const int rank = H5Sget_simple_extent_ndims(file_space.get());
     const hsize_t offset[2] = {part.offset, static_cast<hsize_t>(column_of(name).component)};
     const hsize_t count[2] = {part.count, 1};
     memory_space = dataspace_handle(H5Screate_simple(1, count, nullptr));
     const herr_t selected = part.count > 0
-      ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr)
-      : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
+                              ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr)
+                              : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
     if (!file_space || !memory_space || rank < 1 || selected < 0)
       throw io_error(failure::system, "cannot select this rank's part of " + what + hdf5_reason());
   });
@@ -248,11 +249,10 @@ void gadget_reader::read_column(const std::string& name, slice part, element_typ
   auto transfer = collective_transfer();
   char nothing = 0;
   std::optional<failure_record> failed;
-  if (count_ > 0 &&
-      H5Dread(dataset.get(), memory_type(type), memory_space.get(), file_space.get(), transfer.get(),
-              part.count > 0 ? out : &nothing) < 0)
+  if (count_ > 0 && H5Dread(dataset.get(), memory_type(type), memory_space.get(), file_space.get(), transfer.get(),
+                            part.count > 0 ? out : &nothing) < 0)
     failed = failure_record{failure::file, "cannot read " + describe(column_of(name).dataset) + hdf5_reason()};
   raise_if_any(comm_, failed);
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

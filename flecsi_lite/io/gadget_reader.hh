@@ -22,7 +22,7 @@
 namespace flecsi_lite::io {
 
 class gadget_reader final : public column_source {
-public:
+ public:
   /// Column `component` of dataset `dataset` (0 for a dataset of N values).
   struct column {
     std::string dataset;
@@ -58,11 +58,11 @@ public:
   bool has_column(const std::string& name) const override;
   element_type column_type(const std::string& name) const override;
 
-protected:
+ protected:
   void read_column(const std::string& name, slice part, element_type type, void* out) const override;
 
-private:
-  const column& column_of(const std::string& name) const;  // usage_error for an unnamed column
+ private:
+  const column& column_of(const std::string& name) const;   // usage_error for an unnamed column
   hdf5_handle open_dataset(const std::string& name) const;  // the column's dataset, or throws
   std::string describe(const std::string& dataset) const;
 
@@ -74,4 +74,4 @@ private:
   std::uint64_t count_ = 0;
 };
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

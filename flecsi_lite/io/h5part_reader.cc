@@ -28,8 +28,7 @@ std::string describe_steps(const std::vector<std::int64_t>& steps) {
   if (steps.back() - steps.front() + 1 == static_cast<std::int64_t>(steps.size()))
     return "it has steps " + std::to_string(steps.front()) + " to " + std::to_string(steps.back());
   std::string list = "it has steps";
-  for (std::size_t k = 0; k < steps.size() && k < 8; ++k)
-    list += (k ? ", " : " ") + std::to_string(steps[k]);
+  for (std::size_t k = 0; k < steps.size() && k < 8; ++k) list += (k ? ", " : " ") + std::to_string(steps[k]);
   return steps.size() > 8 ? list + ", ..." : list;
 }
 
@@ -37,7 +36,7 @@ herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* names) {
   static_cast<std::vector<std::string>*>(names)->emplace_back(name);
   return 0;
 }
-} // namespace
+}  // namespace
 
 h5part_reader::h5part_reader(std::string path, MPI_Comm comm) : path_(std::move(path)), comm_(comm) {
   hdf5_quiet_scope quiet;
@@ -50,9 +49,7 @@ h5part_reader::~h5part_reader() {
   file_.close();
 }
 
-bool h5part_reader::has_step(std::int64_t step) const {
-  return std::binary_search(steps_.begin(), steps_.end(), step);
-}
+bool h5part_reader::has_step(std::int64_t step) const { return std::binary_search(steps_.begin(), steps_.end(), step); }
 
 std::int64_t h5part_reader::last_step() const {
   if (steps_.empty()) throw missing_step_error("'" + path_ + "' has no steps");
@@ -73,8 +70,8 @@ std::string h5part_reader::describe_attribute(std::int64_t step, const std::stri
 
 hdf5_handle h5part_reader::open_step(std::int64_t step) const {
   if (!has_step(step))
-    throw missing_step_error("'" + path_ + "' has no step " + std::to_string(step) + " (" +
-                             describe_steps(steps_) + ")");
+    throw missing_step_error("'" + path_ + "' has no step " + std::to_string(step) + " (" + describe_steps(steps_) +
+                             ")");
   auto group = group_handle(H5Gopen2(file_.get(), h5part::step_group_name(step).c_str(), H5P_DEFAULT));
   if (!group) throw file_error("cannot open " + describe_step(step) + hdf5_reason());
   return group;
@@ -93,7 +90,7 @@ std::vector<std::string> dataset_names(hid_t group, const std::string& where) {
   }
   return names;
 }
-} // namespace
+}  // namespace
 
 hdf5_handle h5part_reader::open_dataset(std::int64_t step, const std::string& name) const {
   auto group = open_step(step);
@@ -103,8 +100,7 @@ hdf5_handle h5part_reader::open_dataset(std::int64_t step, const std::string& na
   }
   const auto names = dataset_names(group.get(), describe_step(step));
   std::string message = describe_step(step) + " has no dataset '" + name + "'";
-  if (const auto near = util::nearest_name(name, names); !near.empty())
-    message += "; did you mean '" + near + "'?";
+  if (const auto near = util::nearest_name(name, names); !near.empty()) message += "; did you mean '" + near + "'?";
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : " ") + n;
   throw missing_dataset_error(message + " (datasets: " + (list.empty() ? "none" : list) + ")");
@@ -118,9 +114,9 @@ void h5part_reader::check_storable(hid_t dataset, std::uint64_t extent, const st
   if (element_size == 0) throw file_error("cannot inspect " + what + hdf5_reason());
   const std::uint64_t file_size = file_size_of(dataset);
   if (file_size > 0 && extent > storable_elements(dataset, element_size, file_size))
-    throw file_error(what + " declares " + std::to_string(extent) + " particles of " +
-                     std::to_string(element_size) + " bytes, more than the file's " +
-                     std::to_string(file_size) + " bytes can hold: the file is corrupted");
+    throw file_error(what + " declares " + std::to_string(extent) + " particles of " + std::to_string(element_size) +
+                     " bytes, more than the file's " + std::to_string(file_size) +
+                     " bytes can hold: the file is corrupted");
 }
 
 std::uint64_t h5part_reader::checked_length(std::int64_t step) const {
@@ -139,9 +135,8 @@ std::uint64_t h5part_reader::checked_length(std::int64_t step) const {
                          " dimensions; H5Part datasets are 1-D");
     check_storable(dataset.get(), extent, describe_dataset(step, name));
     if (length && *length != extent)
-      throw layout_error(describe_step(step) + " has datasets of different lengths: '" + first +
-                         "' has " + std::to_string(*length) + " particles, '" + name + "' has " +
-                         std::to_string(extent));
+      throw layout_error(describe_step(step) + " has datasets of different lengths: '" + first + "' has " +
+                         std::to_string(*length) + " particles, '" + name + "' has " + std::to_string(extent));
     if (!length) length = extent, first = name;
   }
   step_lengths_[step] = length.value_or(0);
@@ -207,10 +202,10 @@ step_info h5part_reader::step_information(std::int64_t step) const {
     info.time = real(h5part::attribute::time, real(h5part::attribute::time_value, 0.0));
     info.dt = real(h5part::attribute::dt, 0.0);
     info.step = has_attribute(group.get(), h5part::attribute::step)
-      ? attribute_as<std::int64_t>(read_attribute(group.get(), h5part::attribute::step,
-                                                  describe_attribute(step, h5part::attribute::step)),
-                                   describe_attribute(step, h5part::attribute::step))
-      : step;
+                  ? attribute_as<std::int64_t>(read_attribute(group.get(), h5part::attribute::step,
+                                                              describe_attribute(step, h5part::attribute::step)),
+                                               describe_attribute(step, h5part::attribute::step))
+                  : step;
   });
   return info;
 }
@@ -250,8 +245,8 @@ slice h5part_reader::block(std::int64_t step) const {
   return block_slice(particle_count(step), rank_of(comm_), size_of(comm_));
 }
 
-void h5part_reader::read_into(std::int64_t step, const std::string& name, slice part,
-                              element_type type, void* out) const {
+void h5part_reader::read_into(std::int64_t step, const std::string& name, slice part, element_type type,
+                              void* out) const {
   hdf5_quiet_scope quiet;
   hdf5_handle dataset, file_space, memory_space;
   std::uint64_t length = 0;
@@ -261,33 +256,31 @@ void h5part_reader::read_into(std::int64_t step, const std::string& name, slice 
     auto stored = datatype_handle(H5Dget_type(dataset.get()));
     if (!stored) throw file_error("cannot inspect " + describe_dataset(step, name) + hdf5_reason());
     if (classify(stored.get()) != type)
-      throw element_type_error(describe_dataset(step, name) + " holds " +
-                               describe_datatype(stored.get()) + " values, not " +
-                               element_type_name(type));
+      throw element_type_error(describe_dataset(step, name) + " holds " + describe_datatype(stored.get()) +
+                               " values, not " + element_type_name(type));
     if (part.offset > length || part.count > length - part.offset)
-      throw slice_error(describe_dataset(step, name) + " has " + std::to_string(length) +
-                        " particles; rank " + std::to_string(rank_of(comm_)) + " asked for [" +
-                        std::to_string(part.offset) + ", " + std::to_string(part.offset + part.count) + ")");
+      throw slice_error(describe_dataset(step, name) + " has " + std::to_string(length) + " particles; rank " +
+                        std::to_string(rank_of(comm_)) + " asked for [" + std::to_string(part.offset) + ", " +
+                        std::to_string(part.offset + part.count) + ")");
     const hsize_t offset = part.offset, count = part.count;
     file_space = dataspace_handle(H5Dget_space(dataset.get()));
     memory_space = dataspace_handle(H5Screate_simple(1, &count, nullptr));
     const herr_t selected = count > 0
-      ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr)
-      : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
+                              ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr)
+                              : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
     if (!file_space || !memory_space || selected < 0)
-      throw io_error(failure::system, "cannot select this rank's part of " +
-                                        describe_dataset(step, name) + hdf5_reason());
+      throw io_error(failure::system,
+                     "cannot select this rank's part of " + describe_dataset(step, name) + hdf5_reason());
   });
   // Collective: every rank takes part, those that read nothing with an empty selection. A
   // dataset without any element has no storage to read from (the same on every rank).
   auto transfer = collective_transfer();
   char nothing = 0;
   std::optional<failure_record> failed;
-  if (length > 0 &&
-      H5Dread(dataset.get(), memory_type(type), memory_space.get(), file_space.get(), transfer.get(),
-              part.count > 0 ? out : &nothing) < 0)
+  if (length > 0 && H5Dread(dataset.get(), memory_type(type), memory_space.get(), file_space.get(), transfer.get(),
+                            part.count > 0 ? out : &nothing) < 0)
     failed = failure_record{failure::file, "cannot read " + describe_dataset(step, name) + hdf5_reason()};
   raise_if_any(comm_, failed);
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -27,7 +27,7 @@
 namespace flecsi_lite::io {
 
 class h5part_reader {
-public:
+ public:
   explicit h5part_reader(std::string path, MPI_Comm comm = runtime::communicator());
   h5part_reader(const h5part_reader&) = delete;
   h5part_reader& operator=(const h5part_reader&) = delete;
@@ -83,9 +83,8 @@ public:
     read_into(step, name, part, element_type_of<T>(), out);
   }
 
-private:
-  void read_into(std::int64_t step, const std::string& name, slice part, element_type type,
-                 void* out) const;
+ private:
+  void read_into(std::int64_t step, const std::string& name, slice part, element_type type, void* out) const;
   hdf5_handle open_step(std::int64_t step) const;  // throws missing_step_error
   hdf5_handle open_dataset(std::int64_t step, const std::string& name) const;
   std::uint64_t checked_length(std::int64_t step) const;  // no MPI: for use inside agree()
@@ -101,4 +100,4 @@ private:
   mutable std::map<std::int64_t, std::uint64_t> step_lengths_;  // checked lengths, by step
 };
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

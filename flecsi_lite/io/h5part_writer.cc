@@ -25,10 +25,9 @@ std::string fingerprint(const std::string& name, const attribute_value& value) {
   if (auto* d = std::get_if<double>(&value)) std::snprintf(real, sizeof real, "%a", *d);
   return name + '\0' + std::to_string(value.index()) + '\0' + (*real ? real : to_string(value));
 }
-} // namespace
+}  // namespace
 
-h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
-  : path_(std::move(path)), comm_(comm) {
+h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how) : path_(std::move(path)), comm_(comm) {
   hdf5_quiet_scope quiet;
   // Before anything is written: the final name and the temporary one must be absent or regular
   // files, or the rename would replace a device, a folder or a link (and H5Fcreate follow it).
@@ -48,11 +47,9 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
         return;
       }
       std::error_code error;
-      std::filesystem::copy_file(path_, partial_path(),
-                                 std::filesystem::copy_options::overwrite_existing, error);
+      std::filesystem::copy_file(path_, partial_path(), std::filesystem::copy_options::overwrite_existing, error);
       if (error)
-        throw file_error("cannot copy '" + path_ + "' to '" + partial_path() +
-                         "' to append to it: " + error.message());
+        throw file_error("cannot copy '" + path_ + "' to '" + partial_path() + "' to append to it: " + error.message());
       append_to_copy = 1;
     });
     MPI_Bcast(&append_to_copy, 1, MPI_INT, 0, comm_);
@@ -63,15 +60,15 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
   auto creation = property_list_handle(H5Pcreate(H5P_FILE_CREATE));
   if (!creation || H5Pset_obj_track_times(creation.get(), false) < 0)
     throw io_error(failure::system, "cannot describe '" + partial_path() + "'" + hdf5_reason());
-  const hid_t id = append_to_copy
-    ? H5Fopen(partial_path().c_str(), H5F_ACC_RDWR, access.get())
-    : H5Fcreate(partial_path().c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
+  const hid_t id = append_to_copy ? H5Fopen(partial_path().c_str(), H5F_ACC_RDWR, access.get())
+                                  : H5Fcreate(partial_path().c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
   std::optional<failure_record> failed;
   if (id < 0)
-    failed = failure_record{failure::file, "cannot " + std::string(append_to_copy ? "open" : "create") +
-                                             " '" + partial_path() + "' for writing" + hdf5_reason() +
+    failed = failure_record{failure::file, "cannot " + std::string(append_to_copy ? "open" : "create") + " '" +
+                                             partial_path() + "' for writing" + hdf5_reason() +
                                              (append_to_copy ? " (to continue the series in it; remove it or "
-                                                               "choose another output file)" : "")};
+                                                               "choose another output file)"
+                                                             : "")};
   file_ = file_handle(id);
   try {
     raise_if_any(comm_, failed);
@@ -115,28 +112,25 @@ void h5part_writer::abandon() noexcept {
     const bool flushed = close_unfinished_file(comm_, file_, partial_path(), storage_failed_);
     if (rank_of(comm_) != 0) return;
     if (flushed) {
-      log::warn() << "h5part: '" << path_ << "' was not closed; its " << steps_written_
-                  << " finished steps are in '" << partial_path() << "'";
+      log::warn() << "h5part: '" << path_ << "' was not closed; its " << steps_written_ << " finished steps are in '"
+                  << partial_path() << "'";
     } else {
       std::error_code error;
       std::filesystem::remove(partial_path(), error);
       log::warn() << "h5part: '" << path_ << "' was not closed and its temporary file could not be "
                   << "completed (disk full?): '" << partial_path() << "' removed, '" << path_ << "' unchanged";
     }
-  } catch (...) {
-  }
+  } catch (...) {}
 }
 
 void h5part_writer::require_open(const char* operation) const {
-  if (!is_open())
-    throw usage_error(std::string(operation) + ": the H5Part writer of '" + path_ + "' is closed");
+  if (!is_open()) throw usage_error(std::string(operation) + ": the H5Part writer of '" + path_ + "' is closed");
 }
 
 void h5part_writer::set_attribute(const std::string& name, const attribute_value& value) {
   hdf5_quiet_scope quiet;
   if (!same_on_all_ranks(comm_, fingerprint(name, value)))
-    throw layout_error("ranks set different root attributes (or values) at the same point in '" +
-                       path_ + "'");
+    throw layout_error("ranks set different root attributes (or values) at the same point in '" + path_ + "'");
   agree(comm_, [&] {
     require_open("set_attribute");
     write_attribute(file_.get(), name, value);
@@ -163,8 +157,8 @@ std::int64_t h5part_writer::drop_steps_from(std::int64_t first_dropped) {
   std::int64_t dropped = 0;
   agree(comm_, [&] {
     require_open("drop_steps_from");
-    if (in_step()) throw usage_error("drop_steps_from: step " + std::to_string(steps_written_) + " of '" + path_ +
-                                     "' is open");
+    if (in_step())
+      throw usage_error("drop_steps_from: step " + std::to_string(steps_written_) + " of '" + path_ + "' is open");
     // Every rank unlinks the same groups: a metadata change, collective in parallel HDF5.
     while (steps_written_ > 0 && iteration_of(steps_written_ - 1) >= first_dropped) {
       const std::string name = h5part::step_group_name(steps_written_ - 1);
@@ -196,11 +190,9 @@ void h5part_writer::begin_step(const step_info& info) {
     auto creation = property_list_handle(H5Pcreate(H5P_GROUP_CREATE));
     if (!creation || H5Pset_obj_track_times(creation.get(), false) < 0)
       throw io_error(failure::system, "cannot describe group " + name + hdf5_reason());
-    group = group_handle(
-      H5Gcreate2(file_.get(), name.c_str(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
+    group = group_handle(H5Gcreate2(file_.get(), name.c_str(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
     if (!group)
-      throw io_error(failure::system,
-                     "cannot create group " + name + " in '" + partial_path() + "'" + hdf5_reason());
+      throw io_error(failure::system, "cannot create group " + name + " in '" + partial_path() + "'" + hdf5_reason());
     write_attribute(group.get(), h5part::attribute::time_value, info.time);
     write_attribute(group.get(), h5part::attribute::time, info.time);
     write_attribute(group.get(), h5part::attribute::step, info.step);
@@ -215,8 +207,7 @@ void h5part_writer::begin_step(const step_info& info) {
 void h5part_writer::set_step_attribute(const std::string& name, const attribute_value& value) {
   hdf5_quiet_scope quiet;
   if (!same_on_all_ranks(comm_, fingerprint(name, value)))
-    throw layout_error("ranks set different step attributes (or values) at the same point in '" +
-                       path_ + "'");
+    throw layout_error("ranks set different step attributes (or values) at the same point in '" + path_ + "'");
   agree(comm_, [&] {
     require_open("set_step_attribute");
     if (!in_step()) throw usage_error("set_step_attribute '" + name + "': no open step in '" + path_ + "'");
@@ -224,8 +215,7 @@ void h5part_writer::set_step_attribute(const std::string& name, const attribute_
   });
 }
 
-void h5part_writer::write_array(const std::string& name, element_type type, const void* data,
-                                std::size_t local_count) {
+void h5part_writer::write_array(const std::string& name, element_type type, const void* data, std::size_t local_count) {
   hdf5_quiet_scope quiet;
   const std::string step = "step " + std::to_string(steps_written_);
   const std::string where = "dataset '" + name + "' of " + step + " in '" + path_ + "'";
@@ -233,14 +223,15 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
     require_open("write");
     if (!in_step()) throw usage_error("write " + where + ": no open step; call begin_step first");
     if (name.empty() || name == "." || name.find('/') != std::string::npos)
-      throw usage_error("write: '" + name + "' is not a valid dataset name (in " + step + " of '" +
-                        path_ + "')");
+      throw usage_error("write: '" + name + "' is not a valid dataset name (in " + step + " of '" + path_ + "')");
     if (step_datasets_.count(name)) throw usage_error("write: " + where + " is already written");
     if (local_count > 0 && data == nullptr) throw usage_error("write " + where + ": no data");
   });
   if (!same_on_all_ranks(comm_, name + '\0' + element_type_name(type)))
-    throw layout_error("ranks write different datasets (names or element types differ) at the "
-                       "same point of " + step + " in '" + path_ + "'");
+    throw layout_error(
+      "ranks write different datasets (names or element types differ) at the "
+      "same point of " +
+      step + " in '" + path_ + "'");
   const placement place = place_contiguously(comm_, local_count);
   if (step_length_ && *step_length_ != place.global_length)
     throw layout_error(where + " has " + std::to_string(place.global_length) +
@@ -256,14 +247,14 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
     if (!global_space || !creation || H5Pset_fill_time(creation.get(), H5D_FILL_TIME_NEVER) < 0 ||
         H5Pset_obj_track_times(creation.get(), false) < 0)
       throw io_error(failure::system, "cannot describe " + where + hdf5_reason());
-    dataset = dataset_handle(H5Dcreate2(step_group_.get(), name.c_str(), file_type(type),
-                                        global_space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
+    dataset = dataset_handle(H5Dcreate2(step_group_.get(), name.c_str(), file_type(type), global_space.get(),
+                                        H5P_DEFAULT, creation.get(), H5P_DEFAULT));
     if (!dataset) throw io_error(failure::system, "cannot create " + where + hdf5_reason());
     file_space = dataspace_handle(H5Dget_space(dataset.get()));
     memory_space = dataspace_handle(H5Screate_simple(1, &count, nullptr));
     const herr_t selected = count > 0
-      ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr)
-      : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
+                              ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr)
+                              : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
     if (!file_space || !memory_space || selected < 0)
       throw io_error(failure::system, "cannot select this rank's part of " + where + hdf5_reason());
   });
@@ -273,9 +264,8 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
   auto transfer = collective_transfer();
   const char nothing = 0;
   std::optional<failure_record> failed;
-  if (place.global_length > 0 &&
-      H5Dwrite(dataset.get(), memory_type(type), memory_space.get(), file_space.get(), transfer.get(),
-               local_count > 0 ? data : &nothing) < 0)
+  if (place.global_length > 0 && H5Dwrite(dataset.get(), memory_type(type), memory_space.get(), file_space.get(),
+                                          transfer.get(), local_count > 0 ? data : &nothing) < 0)
     failed = failure_record{failure::system, "cannot write " + where + hdf5_reason()};
   raise_marking_storage_failure(comm_, failed, storage_failed_);
   step_datasets_.insert(name);
@@ -288,8 +278,8 @@ void h5part_writer::end_step() {
     require_open("end_step");
     if (!in_step()) throw usage_error("end_step: no open step in '" + path_ + "'");
     if (step_group_.close() < 0)
-      throw io_error(failure::system, "cannot close step " + std::to_string(steps_written_) +
-                                        " of '" + path_ + "'" + hdf5_reason());
+      throw io_error(failure::system,
+                     "cannot close step " + std::to_string(steps_written_) + " of '" + path_ + "'" + hdf5_reason());
     write_attribute(file_.get(), h5part::attribute::num_steps, std::int64_t{steps_written_ + 1});
   });
   ++steps_written_;
@@ -322,4 +312,4 @@ void h5part_writer::close() {
   commit();
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

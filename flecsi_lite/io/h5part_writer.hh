@@ -47,15 +47,14 @@ struct run_description {
 };
 
 class h5part_writer {
-public:
+ public:
   enum class mode {
     create,  // a new series: the partial file starts empty
     append   // continue the complete file `path` (a copy of it), or the `<path>.partial` an
              // interrupted run left when `path` is absent, or create it when both are absent
   };
 
-  explicit h5part_writer(std::string path, MPI_Comm comm = runtime::communicator(),
-                         mode how = mode::create);
+  explicit h5part_writer(std::string path, MPI_Comm comm = runtime::communicator(), mode how = mode::create);
   h5part_writer(const h5part_writer&) = delete;
   h5part_writer& operator=(const h5part_writer&) = delete;
   /// Without close(): drops an unfinished step, closes the partial file (collectively, like
@@ -109,9 +108,8 @@ public:
   const std::string& path() const { return path_; }
   std::string partial_path() const { return path_ + ".partial"; }
 
-private:
-  void write_array(const std::string& name, element_type type, const void* data,
-                   std::size_t local_count);
+ private:
+  void write_array(const std::string& name, element_type type, const void* data, std::size_t local_count);
   void require_open(const char* operation) const;
   std::int64_t iteration_of(std::int64_t step) const;  // inside agree()
   void abandon() noexcept;
@@ -122,10 +120,10 @@ private:
   hdf5_handle step_group_;
   std::int64_t steps_written_ = 0;
   std::int64_t last_iteration_ = -1;
-  bool committing_ = false;                      // finished, the rename still to come
-  bool storage_failed_ = false;                  // a data write or flush failed on some rank
-  std::set<std::string> step_datasets_;          // names written in the open step
-  std::optional<std::uint64_t> step_length_;     // global length of the open step's datasets
+  bool committing_ = false;                   // finished, the rename still to come
+  bool storage_failed_ = false;               // a data write or flush failed on some rank
+  std::set<std::string> step_datasets_;       // names written in the open step
+  std::optional<std::uint64_t> step_length_;  // global length of the open step's datasets
 };
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

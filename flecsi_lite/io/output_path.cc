@@ -19,14 +19,22 @@ std::string non_regular_kind(const std::string& path) {
   switch (status.type()) {
     case fs::file_type::not_found:
     case fs::file_type::none:
-    case fs::file_type::regular: return "";
-    case fs::file_type::directory: return "a directory";
-    case fs::file_type::symlink: return "a symbolic link";
-    case fs::file_type::character: return "a character device";
-    case fs::file_type::block: return "a block device";
-    case fs::file_type::fifo: return "a fifo";
-    case fs::file_type::socket: return "a socket";
-    default: return "not a regular file";
+    case fs::file_type::regular:
+      return "";
+    case fs::file_type::directory:
+      return "a directory";
+    case fs::file_type::symlink:
+      return "a symbolic link";
+    case fs::file_type::character:
+      return "a character device";
+    case fs::file_type::block:
+      return "a block device";
+    case fs::file_type::fifo:
+      return "a fifo";
+    case fs::file_type::socket:
+      return "a socket";
+    default:
+      return "not a regular file";
   }
 }
 
@@ -34,7 +42,7 @@ namespace {
 std::string named(const std::string& path, const std::string& role) {
   return (role.empty() ? "" : role + " ") + "'" + path + "'";
 }
-} // namespace
+}  // namespace
 
 void require_replaceable(const std::string& path, const std::string& role) {
   const std::string kind = non_regular_kind(path);
@@ -73,4 +81,4 @@ void write_text_file(const std::string& path, const std::string& text, const std
     throw file_error("cannot rename '" + partial + "' to " + named(path, "the " + role));
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

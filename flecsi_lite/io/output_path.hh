@@ -31,4 +31,4 @@ void require_writable_folder(const std::string& path, const std::string& role = 
 /// (require_replaceable). Throws file_error naming `role` (e.g. "statistics_file"). Local.
 void write_text_file(const std::string& path, const std::string& text, const std::string& role);
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

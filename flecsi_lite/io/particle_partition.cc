@@ -15,4 +15,4 @@ placement place_contiguously(MPI_Comm comm, std::uint64_t local_count) {
   return result;
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -12,9 +12,7 @@ namespace flecsi_lite::io {
 struct slice {
   std::uint64_t offset = 0;
   std::uint64_t count = 0;
-  friend bool operator==(const slice& a, const slice& b) {
-    return a.offset == b.offset && a.count == b.count;
-  }
+  friend bool operator==(const slice& a, const slice& b) { return a.offset == b.offset && a.count == b.count; }
 };
 
 /// Rank r of p gets floor(n / p) elements, plus one for the first n mod p ranks, in rank order.
@@ -32,4 +30,4 @@ struct placement {
 };
 placement place_contiguously(MPI_Comm comm, std::uint64_t local_count);
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

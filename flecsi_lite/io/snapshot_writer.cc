@@ -22,11 +22,16 @@ namespace {
 // The file and memory types of each kind of attribute array.
 template<class T>
 std::pair<hid_t, hid_t> attribute_types() {
-  if constexpr (std::is_same_v<T, std::int32_t>) return {H5T_STD_I32LE, H5T_NATIVE_INT32};
-  else if constexpr (std::is_same_v<T, std::uint32_t>) return {H5T_STD_U32LE, H5T_NATIVE_UINT32};
-  else if constexpr (std::is_same_v<T, std::int64_t>) return {H5T_STD_I64LE, H5T_NATIVE_INT64};
-  else if constexpr (std::is_same_v<T, float>) return {H5T_IEEE_F32LE, H5T_NATIVE_FLOAT};
-  else return {H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE};
+  if constexpr (std::is_same_v<T, std::int32_t>)
+    return {H5T_STD_I32LE, H5T_NATIVE_INT32};
+  else if constexpr (std::is_same_v<T, std::uint32_t>)
+    return {H5T_STD_U32LE, H5T_NATIVE_UINT32};
+  else if constexpr (std::is_same_v<T, std::int64_t>)
+    return {H5T_STD_I64LE, H5T_NATIVE_INT64};
+  else if constexpr (std::is_same_v<T, float>)
+    return {H5T_IEEE_F32LE, H5T_NATIVE_FLOAT};
+  else
+    return {H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE};
 }
 
 // Numbers as a 1-D array (H5Screate_simple of their count), text as a scalar fixed-length string,
@@ -54,8 +59,8 @@ void write_snapshot_attribute(hid_t location, const snapshot_attribute& attribut
         std::tie(stored, in_memory) = attribute_types<typename V::value_type>();
         data = value.data();
       }
-      auto handle = attribute_handle(
-        H5Acreate2(location, attribute.name.c_str(), stored, space.get(), H5P_DEFAULT, H5P_DEFAULT));
+      auto handle =
+        attribute_handle(H5Acreate2(location, attribute.name.c_str(), stored, space.get(), H5P_DEFAULT, H5P_DEFAULT));
       if (!space || !handle || H5Awrite(handle.get(), in_memory, data) < 0) fail();
     },
     attribute.value);
@@ -69,8 +74,10 @@ std::string fingerprint(const snapshot_attributes& attributes) {
     std::visit(
       [&](const auto& value) {
         using V = std::decay_t<decltype(value)>;
-        if constexpr (std::is_same_v<V, std::string>) bytes += value;
-        else bytes.append(reinterpret_cast<const char*>(value.data()), value.size() * sizeof(value[0]));
+        if constexpr (std::is_same_v<V, std::string>)
+          bytes += value;
+        else
+          bytes.append(reinterpret_cast<const char*>(value.data()), value.size() * sizeof(value[0]));
       },
       attribute.value);
     bytes += '\0';
@@ -78,9 +85,7 @@ std::string fingerprint(const snapshot_attributes& attributes) {
   return bytes;
 }
 
-bool valid_name(const std::string& name) {
-  return !name.empty() && name != "." && name.find('/') == std::string::npos;
-}
+bool valid_name(const std::string& name) { return !name.empty() && name != "." && name.find('/') == std::string::npos; }
 
 hdf5_handle untimed_creation(hid_t class_id) {
   // No modification times: identical runs write identical files.
@@ -89,7 +94,7 @@ hdf5_handle untimed_creation(hid_t class_id) {
     throw io_error(failure::system, "cannot describe an HDF5 object" + hdf5_reason());
   return creation;
 }
-} // namespace
+}  // namespace
 
 snapshot_writer::snapshot_writer(std::string path, MPI_Comm comm) : path_(std::move(path)), comm_(comm) {
   hdf5_quiet_scope quiet;
@@ -118,8 +123,8 @@ snapshot_writer::~snapshot_writer() { abandon(); }
 void snapshot_writer::abandon() noexcept {
   if (committing_) {
     if (rank_of(comm_) == 0)
-      log::warn() << "snapshot: '" << path_ << "' was left unchanged; the complete snapshot is in '"
-                  << partial_path() << "'";
+      log::warn() << "snapshot: '" << path_ << "' was left unchanged; the complete snapshot is in '" << partial_path()
+                  << "'";
     return;
   }
   if (!is_open()) return;
@@ -129,12 +134,11 @@ void snapshot_writer::abandon() noexcept {
     if (rank_of(comm_) == 0) {
       std::error_code error;
       std::filesystem::remove(partial_path(), error);
-      log::warn() << "snapshot: '" << path_ << "' was not completed: '" << partial_path() << "' removed, '"
-                  << path_ << "' unchanged";
+      log::warn() << "snapshot: '" << path_ << "' was not completed: '" << partial_path() << "' removed, '" << path_
+                  << "' unchanged";
     }
     MPI_Barrier(comm_);  // every rank returns with the partial file gone
-  } catch (...) {
-  }
+  } catch (...) {}
 }
 
 void snapshot_writer::require_open(const char* operation) const {
@@ -179,10 +183,12 @@ void snapshot_writer::write_array(const std::string& group, const std::string& n
     if (datasets_.count(group + "/" + name)) throw usage_error("write: " + where + " is already written");
     if (local_rows > 0 && data == nullptr) throw usage_error("write " + where + ": no data");
   });
-  if (!same_on_all_ranks(comm_, group + '\0' + name + '\0' + element_type_name(type) + '\0' +
-                                  std::to_string(columns) + '\0' + fingerprint(attributes)))
-    throw layout_error("ranks write different datasets (names, types, columns or attributes differ) at the same "
-                       "point of '" + path_ + "'");
+  if (!same_on_all_ranks(comm_, group + '\0' + name + '\0' + element_type_name(type) + '\0' + std::to_string(columns) +
+                                  '\0' + fingerprint(attributes)))
+    throw layout_error(
+      "ranks write different datasets (names, types, columns or attributes differ) at the same "
+      "point of '" +
+      path_ + "'");
   const placement place = place_contiguously(comm_, local_rows);
 
   hdf5_handle dataset, file_space, memory_space;
@@ -196,15 +202,15 @@ void snapshot_writer::write_array(const std::string& group, const std::string& n
     // Every element is written below: no fill value needed.
     if (!global_space || H5Pset_fill_time(creation.get(), H5D_FILL_TIME_NEVER) < 0)
       throw io_error(failure::system, "cannot describe " + where + hdf5_reason());
-    dataset = dataset_handle(H5Dcreate2(group_of.get(), name.c_str(), file_type(type), global_space.get(),
-                                        H5P_DEFAULT, creation.get(), H5P_DEFAULT));
+    dataset = dataset_handle(H5Dcreate2(group_of.get(), name.c_str(), file_type(type), global_space.get(), H5P_DEFAULT,
+                                        creation.get(), H5P_DEFAULT));
     if (!dataset) throw io_error(failure::system, "cannot create " + where + hdf5_reason());
     for (const auto& attribute : attributes) write_snapshot_attribute(dataset.get(), attribute, where);
     file_space = dataspace_handle(H5Dget_space(dataset.get()));
     memory_space = dataspace_handle(H5Screate_simple(rank, count, nullptr));
     const herr_t selected = place.local.count > 0
-      ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr)
-      : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
+                              ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr)
+                              : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
     if (!file_space || !memory_space || selected < 0)
       throw io_error(failure::system, "cannot select this rank's part of " + where + hdf5_reason());
   });
@@ -238,4 +244,4 @@ void snapshot_writer::close() {
   commit();
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

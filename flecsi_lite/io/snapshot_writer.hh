@@ -37,9 +37,9 @@
 namespace flecsi_lite::io {
 
 /// An attribute of a snapshot: a 1-D array of numbers of one type, or a string.
-using snapshot_attribute_value = std::variant<std::vector<std::int32_t>, std::vector<std::uint32_t>,
-                                              std::vector<std::int64_t>, std::vector<float>, std::vector<double>,
-                                              std::string>;
+using snapshot_attribute_value =
+  std::variant<std::vector<std::int32_t>, std::vector<std::uint32_t>, std::vector<std::int64_t>, std::vector<float>,
+               std::vector<double>, std::string>;
 
 struct snapshot_attribute {
   std::string name;
@@ -48,7 +48,7 @@ struct snapshot_attribute {
 using snapshot_attributes = std::vector<snapshot_attribute>;
 
 class snapshot_writer {
-public:
+ public:
   explicit snapshot_writer(std::string path, MPI_Comm comm = runtime::communicator());
   snapshot_writer(const snapshot_writer&) = delete;
   snapshot_writer& operator=(const snapshot_writer&) = delete;
@@ -64,8 +64,8 @@ public:
   /// of group `group` (created when absent): shape N (columns 1) or N x columns, with
   /// `attributes` on the dataset. A dataset is written once.
   template<class T>
-  void write(const std::string& group, const std::string& name, const T* data, std::size_t local_rows,
-             int columns = 1, const snapshot_attributes& attributes = {}) {
+  void write(const std::string& group, const std::string& name, const T* data, std::size_t local_rows, int columns = 1,
+             const snapshot_attributes& attributes = {}) {
     write_array(group, name, element_type_of<T>(), data, local_rows, columns, attributes);
   }
   /// Same, for a contiguous container holding local rows x columns values.
@@ -73,8 +73,7 @@ public:
   void write(const std::string& group, const std::string& name, const Container& values, int columns = 1,
              const snapshot_attributes& attributes = {}) {
     const auto size = static_cast<std::size_t>(values.size());
-    write(group, name, values.data(), columns > 0 ? size / static_cast<std::size_t>(columns) : 0, columns,
-          attributes);
+    write(group, name, values.data(), columns > 0 ? size / static_cast<std::size_t>(columns) : 0, columns, attributes);
   }
 
   /// finish() then commit().
@@ -89,7 +88,7 @@ public:
   const std::string& path() const { return path_; }
   std::string partial_path() const { return path_ + ".partial"; }
 
-private:
+ private:
   void write_array(const std::string& group, const std::string& name, element_type type, const void* data,
                    std::size_t local_rows, int columns, const snapshot_attributes& attributes);
   void require_open(const char* operation) const;
@@ -99,9 +98,9 @@ private:
   std::string path_;
   MPI_Comm comm_;
   hdf5_handle file_;
-  bool committing_ = false;       // finished, the rename still to come
-  bool storage_failed_ = false;   // a data write or flush failed on some rank
+  bool committing_ = false;         // finished, the rename still to come
+  bool storage_failed_ = false;     // a data write or flush failed on some rank
   std::set<std::string> datasets_;  // "group/name" of the datasets written
 };
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

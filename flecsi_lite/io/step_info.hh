@@ -11,4 +11,4 @@ struct step_info {
   double dt = 0;
 };
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

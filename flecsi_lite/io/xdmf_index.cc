@@ -20,12 +20,13 @@ namespace {
 // The root groups of an open file, in HDF5's name order.
 std::vector<std::string> link_names(hid_t location) {
   std::vector<std::string> names;
-  H5Literate(location, H5_INDEX_NAME, H5_ITER_INC, nullptr,
-             [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
-               static_cast<std::vector<std::string>*>(out)->push_back(name);
-               return 0;
-             },
-             &names);
+  H5Literate(
+    location, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+    [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
+      static_cast<std::vector<std::string>*>(out)->push_back(name);
+      return 0;
+    },
+    &names);
   return names;
 }
 
@@ -52,9 +53,12 @@ xdmf_array describe_dataset(hid_t group, const std::string& name) {
   hsize_t extent[2] = {0, 1};
   H5Sget_simple_extent_dims(space.get(), extent, nullptr);
   const H5T_class_t kind = H5Tget_class(type.get());
-  if (kind == H5T_FLOAT) array.number_type = "Float";
-  else if (kind == H5T_INTEGER) array.number_type = H5Tget_sign(type.get()) == H5T_SGN_NONE ? "UInt" : "Int";
-  else return array;
+  if (kind == H5T_FLOAT)
+    array.number_type = "Float";
+  else if (kind == H5T_INTEGER)
+    array.number_type = H5Tget_sign(type.get()) == H5T_SGN_NONE ? "UInt" : "Int";
+  else
+    return array;
   array.name = name;
   array.rows = extent[0];
   array.columns = rank == 2 ? static_cast<int>(extent[1]) : 1;
@@ -65,8 +69,7 @@ xdmf_array describe_dataset(hid_t group, const std::string& name) {
 double read_time(hid_t file, const snapshot_series_layout& layout, const std::string& path) {
   const std::string what = "attribute " + layout.time_group + "/" + layout.time_attribute + " of '" + path + "'";
   auto group = group_handle(H5Gopen2(file, layout.time_group.c_str(), H5P_DEFAULT));
-  if (!group || H5Aexists(group.get(), layout.time_attribute.c_str()) <= 0)
-    throw missing_attribute_error("no " + what);
+  if (!group || H5Aexists(group.get(), layout.time_attribute.c_str()) <= 0) throw missing_attribute_error("no " + what);
   auto attribute = attribute_handle(H5Aopen(group.get(), layout.time_attribute.c_str(), H5P_DEFAULT));
   auto space = dataspace_handle(H5Aget_space(attribute.get()));
   // One number, scalar or (as GADGET and SWIFT write it) an array of one.
@@ -89,11 +92,20 @@ std::string escaped(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -103,12 +115,11 @@ std::string data_item(const xdmf_array& array, const std::string& file, const st
   std::ostringstream item;
   item << "<DataItem Dimensions=\"" << array.rows;
   if (array.columns > 1) item << " " << array.columns;
-  item << "\" NumberType=\"" << array.number_type << "\" Precision=\"" << array.precision
-       << "\" Format=\"HDF\">" << escaped(file) << ":/" << escaped(group) << "/" << escaped(array.name)
-       << "</DataItem>";
+  item << "\" NumberType=\"" << array.number_type << "\" Precision=\"" << array.precision << "\" Format=\"HDF\">"
+       << escaped(file) << ":/" << escaped(group) << "/" << escaped(array.name) << "</DataItem>";
   return item.str();
 }
-} // namespace
+}  // namespace
 
 snapshot_description describe_snapshot(const std::string& path, const snapshot_series_layout& layout) {
   hdf5_quiet_scope quiet;
@@ -182,4 +193,4 @@ void write_xdmf_index(MPI_Comm comm, const std::string& index_path, const std::v
   });
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

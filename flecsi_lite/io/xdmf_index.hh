@@ -57,4 +57,4 @@ std::string xdmf_text(const std::vector<snapshot_description>& snapshots, const 
 void write_xdmf_index(MPI_Comm comm, const std::string& index_path, const std::vector<std::string>& paths,
                       const snapshot_series_layout& layout = {});
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -21,4 +21,4 @@ int size() {
 
 void detail::set_communicator(MPI_Comm comm) { framework_comm = comm; }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

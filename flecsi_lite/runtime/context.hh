@@ -27,4 +27,4 @@ namespace detail {
 void set_communicator(MPI_Comm comm);
 }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

@@ -8,7 +8,7 @@ namespace flecsi_lite::log {
 namespace {
 bool all_ranks = false;
 severity threshold = severity::info;
-} // namespace
+}  // namespace
 
 void set_all_ranks(bool all) { all_ranks = all; }
 void set_threshold(severity s) { threshold = s; }
@@ -30,4 +30,4 @@ message::~message() {
   out << line.str() << std::flush;
 }
 
-} // namespace flecsi_lite::log
+}  // namespace flecsi_lite::log

@@ -15,7 +15,7 @@ bool enabled(severity s);
 
 /// One message, printed (prefixed by the rank when several ranks speak) when it goes out of scope.
 class message {
-public:
+ public:
   explicit message(severity s) : severity_(s), active_(enabled(s)) {}
   message(const message&) = delete;
   ~message();
@@ -25,7 +25,7 @@ public:
     return *this;
   }
 
-private:
+ private:
   severity severity_;
   bool active_;
   std::ostringstream stream_;
@@ -36,4 +36,4 @@ inline message info() { return message(severity::info); }
 inline message warn() { return message(severity::warn); }
 inline message error() { return message(severity::error); }
 
-} // namespace flecsi_lite::log
+}  // namespace flecsi_lite::log

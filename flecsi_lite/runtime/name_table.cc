@@ -17,4 +17,4 @@ std::string not_a_choice(std::string_view text, const std::vector<std::string>& 
   return message;
 }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

@@ -27,9 +27,8 @@ std::string not_a_choice(std::string_view text, const std::vector<std::string>& 
 /// the help text). `noun` names what the values are ("kernel", "equation of state") in errors.
 template<class Enum>
 class name_table {
-public:
-  name_table(std::string noun, std::initializer_list<std::pair<const char*, Enum>> entries)
-    : noun_(std::move(noun)) {
+ public:
+  name_table(std::string noun, std::initializer_list<std::pair<const char*, Enum>> entries) : noun_(std::move(noun)) {
     for (const auto& [name, value] : entries) {
       for (std::size_t i = 0; i < names_.size(); ++i)
         if (names_[i] == name || values_[i] == value)
@@ -57,10 +56,10 @@ public:
   const std::vector<Enum>& values() const { return values_; }
   const std::string& noun() const { return noun_; }
 
-private:
+ private:
   std::string noun_;
   std::vector<std::string> names_;
   std::vector<Enum> values_;
 };
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

@@ -14,15 +14,14 @@ options& options::flag(const std::string& name, const std::string& help) {
   return *this;
 }
 
-options& options::value(const std::string& name, const std::string& metavar,
-                        const std::string& help, const std::string& default_value) {
+options& options::value(const std::string& name, const std::string& metavar, const std::string& help,
+                        const std::string& default_value) {
   order_.push_back(name);
   specs_[name] = {kind::value, metavar, help, default_value};
   return *this;
 }
 
-options& options::repeated(const std::string& name, const std::string& metavar,
-                           const std::string& help) {
+options& options::repeated(const std::string& name, const std::string& metavar, const std::string& help) {
   order_.push_back(name);
   specs_[name] = {kind::repeated, metavar, help, ""};
   return *this;
@@ -36,8 +35,7 @@ options& options::positional(const std::string& name, const std::string& help, b
 const options::spec& options::find(const std::string& name) const {
   if (auto it = specs_.find(name); it != specs_.end()) return it->second;
   std::string message = "unknown option '--" + name + "'";
-  if (auto near = util::nearest_name(name, order_); !near.empty())
-    message += "; did you mean '--" + near + "'?";
+  if (auto near = util::nearest_name(name, order_); !near.empty()) message += "; did you mean '--" + near + "'?";
   throw options_error(message + " (see --help)");
 }
 
@@ -65,15 +63,13 @@ void options::parse(int argc, const char* const* argv) {
       if (s.type == kind::value) given_[name].clear();
       given_[name].push_back(inline_value);
     } else {
-      if (next_positional >= positionals_.size())
-        throw options_error("unexpected argument '" + arg + "' (see --help)");
+      if (next_positional >= positionals_.size()) throw options_error("unexpected argument '" + arg + "' (see --help)");
       given_[positionals_[next_positional++].name].push_back(arg);
     }
   }
   if (has("help")) return;  // --help needs nothing else
   for (std::size_t p = next_positional; p < positionals_.size(); ++p)
-    if (positionals_[p].required)
-      throw options_error("missing argument <" + positionals_[p].name + "> (see --help)");
+    if (positionals_[p].required) throw options_error("missing argument <" + positionals_[p].name + "> (see --help)");
 }
 
 bool options::has(const std::string& name) const {
@@ -82,8 +78,7 @@ bool options::has(const std::string& name) const {
 }
 
 std::string options::get(const std::string& name) const {
-  if (auto it = given_.find(name); it != given_.end() && !it->second.empty())
-    return it->second.back();
+  if (auto it = given_.find(name); it != given_.end() && !it->second.empty()) return it->second.back();
   if (auto it = specs_.find(name); it != specs_.end()) return it->second.default_value;
   return {};
 }
@@ -117,4 +112,4 @@ std::string options::help(const std::string& program) const {
   return out.str();
 }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

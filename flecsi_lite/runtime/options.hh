@@ -14,7 +14,7 @@ struct options_error : std::runtime_error {
 };
 
 class options {
-public:
+ public:
   explicit options(std::string description = {}) : description_(std::move(description)) {}
 
   options& flag(const std::string& name, const std::string& help);
@@ -27,13 +27,13 @@ public:
   /// Parses argv[1..argc); throws options_error naming the offending argument.
   void parse(int argc, const char* const* argv);
 
-  bool has(const std::string& name) const;  // flag given, or value/positional present
-  std::string get(const std::string& name) const;  // value, default, or "" when absent
+  bool has(const std::string& name) const;                      // flag given, or value/positional present
+  std::string get(const std::string& name) const;               // value, default, or "" when absent
   std::vector<std::string> all(const std::string& name) const;  // every occurrence
   /// Usage, options and defaults; with a note on --kokkos-* options when Kokkos is running.
   std::string help(const std::string& program) const;
 
-private:
+ private:
   enum class kind { flag, value, repeated };
   struct spec {
     kind type;
@@ -52,4 +52,4 @@ private:
   std::map<std::string, std::vector<std::string>> given_;
 };
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

@@ -37,11 +37,13 @@ struct member_chain {
     return walk<0>(object);
   }
 
-private:
+ private:
   template<std::size_t I, class Object>
   decltype(auto) walk(Object& object) const {
-    if constexpr (I == sizeof...(Pointers)) return (object);
-    else return walk<I + 1>(object.*std::get<I>(pointers));
+    if constexpr (I == sizeof...(Pointers))
+      return (object);
+    else
+      return walk<I + 1>(object.*std::get<I>(pointers));
   }
 };
 
@@ -56,19 +58,21 @@ namespace detail {
 /// The member of `settings` that `member` designates, as a reference.
 template<class Settings, class Member>
 decltype(auto) reach(Settings& settings, const Member& member) {
-  if constexpr (std::is_member_object_pointer_v<Member>) return (settings.*member);
-  else return member(settings);
+  if constexpr (std::is_member_object_pointer_v<Member>)
+    return (settings.*member);
+  else
+    return member(settings);
 }
 template<class Settings, class Member>
-using member_type = std::remove_cv_t<std::remove_reference_t<decltype(reach(std::declval<Settings&>(),
-                                                                              std::declval<const Member&>()))>>;
-} // namespace detail
+using member_type =
+  std::remove_cv_t<std::remove_reference_t<decltype(reach(std::declval<Settings&>(), std::declval<const Member&>()))>>;
+}  // namespace detail
 
 /// The keys of one settings struct, each bound to its member. Keys are declared in order; each
 /// declaring function returns the key's parameter_declaration, so bounds chain on it.
 template<class Settings>
 class parameter_block {
-public:
+ public:
   /// `defaults` gives every key its default (by default, the struct's member initializers).
   explicit parameter_block(Settings defaults = Settings{}) : defaults_(std::move(defaults)) {}
 
@@ -149,7 +153,7 @@ public:
   const parameter_schema& schema() const { return schema_; }
   const Settings& defaults() const { return defaults_; }
 
-private:
+ private:
   template<class T, class Member>
   parameter_declaration& bind(parameter_declaration& declaration, const std::string& name, const Member& member) {
     declaration.default_value(detail::reach(defaults_, member));
@@ -163,4 +167,4 @@ private:
   std::vector<std::function<void(const Settings&)>> checks_;
 };
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

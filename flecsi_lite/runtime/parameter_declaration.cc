@@ -18,11 +18,16 @@ using detail::shortest_real;
 
 const char* parameter_type_name(parameter_type type) {
   switch (type) {
-    case parameter_type::real: return "real";
-    case parameter_type::integer: return "integer";
-    case parameter_type::boolean: return "boolean";
-    case parameter_type::string: return "string";
-    case parameter_type::real_list: return "list of reals";
+    case parameter_type::real:
+      return "real";
+    case parameter_type::integer:
+      return "integer";
+    case parameter_type::boolean:
+      return "boolean";
+    case parameter_type::string:
+      return "string";
+    case parameter_type::real_list:
+      return "list of reals";
   }
   return "unknown";
 }
@@ -30,13 +35,12 @@ const char* parameter_type_name(parameter_type type) {
 // ---- declarations -------------------------------------------------------------------------
 
 parameter_declaration::parameter_declaration(std::string name, parameter_type type, std::string description)
-  : name_(std::move(name)), type_(type), description_(std::move(description)) {}
+    : name_(std::move(name)), type_(type), description_(std::move(description)) {}
 
 parameter_declaration& parameter_declaration::set_default(parameter_value value) {
   // The variant's alternatives follow the order of parameter_type.
   if (value.index() != static_cast<std::size_t>(type_))
-    throw std::logic_error("parameter schema: the default of '" + name_ + "' is not a " +
-                           parameter_type_name(type_));
+    throw std::logic_error("parameter schema: the default of '" + name_ + "' is not a " + parameter_type_name(type_));
   default_ = std::move(value);
   return *this;
 }
@@ -47,7 +51,7 @@ void require_bounded_type(parameter_type type, const std::string& name) {
     throw std::logic_error("parameter schema: '" + name + "' is a " + parameter_type_name(type) +
                            " and cannot have bounds");
 }
-} // namespace
+}  // namespace
 
 parameter_declaration& parameter_declaration::at_least(double minimum) {
   require_bounded_type(type_, name_);
@@ -104,20 +108,19 @@ std::string parameter_declaration::violation(const parameter_value& value) const
   switch (type_) {
     case parameter_type::real:
     case parameter_type::integer: {
-      const double v = type_ == parameter_type::real ? std::get<double>(value)
-                                                     : static_cast<double>(std::get<std::int64_t>(value));
+      const double v =
+        type_ == parameter_type::real ? std::get<double>(value) : static_cast<double>(std::get<std::int64_t>(value));
       if (outside(v)) return format(value) + " is out of range (must be " + constraint_text() + ")";
       return "";
     }
     case parameter_type::real_list: {
       const auto& values = std::get<std::vector<double>>(value);
       if (length_ && values.size() != *length_)
-        return format(value) + " has " + std::to_string(values.size()) + " elements, not " +
-               std::to_string(*length_);
+        return format(value) + " has " + std::to_string(values.size()) + " elements, not " + std::to_string(*length_);
       for (std::size_t i = 0; i < values.size(); ++i)
         if (outside(values[i]))
-          return "element " + std::to_string(i + 1) + " (" + shortest_real(values[i]) +
-                 ") is out of range (must be " + bounds_text() + ")";
+          return "element " + std::to_string(i + 1) + " (" + shortest_real(values[i]) + ") is out of range (must be " +
+                 bounds_text() + ")";
       return "";
     }
     case parameter_type::string: {
@@ -125,20 +128,30 @@ std::string parameter_declaration::violation(const parameter_value& value) const
       if (choices_.empty() || std::find(choices_.begin(), choices_.end(), text) != choices_.end()) return "";
       return not_a_choice(text, choices_);
     }
-    case parameter_type::boolean: return "";
+    case parameter_type::boolean:
+      return "";
   }
   return "";
 }
 
-std::optional<parameter_value> parameter_declaration::interpret(const std::string& text,
-                                                                std::string& problem) const {
+std::optional<parameter_value> parameter_declaration::interpret(const std::string& text, std::string& problem) const {
   std::optional<parameter_value> value;
   switch (type_) {
-    case parameter_type::real: if (auto v = parse_real(text, problem)) value = *v; break;
-    case parameter_type::integer: if (auto v = parse_integer(text, problem)) value = *v; break;
-    case parameter_type::boolean: if (auto v = parse_boolean(text, problem)) value = *v; break;
-    case parameter_type::string: if (auto v = parse_string(text, problem)) value = *v; break;
-    case parameter_type::real_list: if (auto v = parse_real_list(text, problem)) value = *v; break;
+    case parameter_type::real:
+      if (auto v = parse_real(text, problem)) value = *v;
+      break;
+    case parameter_type::integer:
+      if (auto v = parse_integer(text, problem)) value = *v;
+      break;
+    case parameter_type::boolean:
+      if (auto v = parse_boolean(text, problem)) value = *v;
+      break;
+    case parameter_type::string:
+      if (auto v = parse_string(text, problem)) value = *v;
+      break;
+    case parameter_type::real_list:
+      if (auto v = parse_real_list(text, problem)) value = *v;
+      break;
   }
   if (!value) return std::nullopt;
   problem = violation(*value);
@@ -161,4 +174,4 @@ std::string parameter_declaration::format(const parameter_value& value) {
   return std::visit(formatter{}, value);
 }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

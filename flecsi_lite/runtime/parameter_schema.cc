@@ -67,4 +67,4 @@ std::string parameter_schema::help() const {
   return text;
 }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

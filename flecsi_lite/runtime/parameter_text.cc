@@ -44,8 +44,10 @@ bool is_key(const std::string& key) {
 std::string strip_comment(const std::string& line) {
   bool quoted = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
-    if (line[i] == '"') quoted = !quoted;
-    else if (line[i] == '#' && !quoted) return line.substr(0, i);
+    if (line[i] == '"')
+      quoted = !quoted;
+    else if (line[i] == '#' && !quoted)
+      return line.substr(0, i);
   }
   return line;
 }
@@ -57,7 +59,7 @@ std::string_view without_plus(const std::string& text) {
   if (view.size() > 1 && view[0] == '+' && view[1] != '-' && view[1] != '+') view.remove_prefix(1);
   return view;
 }
-} // namespace
+}  // namespace
 
 std::optional<double> parse_real(const std::string& text, std::string& problem) {
   const std::string_view view = without_plus(text);
@@ -125,8 +127,8 @@ std::optional<std::vector<double>> parse_real_list(const std::string& text, std:
     std::string element_problem;
     const auto value = items[i].empty() ? std::nullopt : parse_real(items[i], element_problem);
     if (!value) {
-      problem = "'" + text + "' is not a list of reals (element " + std::to_string(i + 1) + " '" +
-                items[i] + "' is not a real number)";
+      problem = "'" + text + "' is not a list of reals (element " + std::to_string(i + 1) + " '" + items[i] +
+                "' is not a real number)";
       return std::nullopt;
     }
     values.push_back(*value);
@@ -140,4 +142,4 @@ std::string shortest_real(double value) {
   const auto result = std::to_chars(text, text + sizeof text, value);
   return std::string(text, result.ptr);
 }
-} // namespace flecsi_lite::runtime::detail
+}  // namespace flecsi_lite::runtime::detail

@@ -21,8 +21,8 @@ using detail::trim;
 
 // ---- resolution ---------------------------------------------------------------------------
 
-parameters parameters::parse(const parameter_schema& schema, const std::string& text,
-                             const std::string& source, const std::vector<std::string>& overrides) {
+parameters parameters::parse(const parameter_schema& schema, const std::string& text, const std::string& source,
+                             const std::vector<std::string>& overrides) {
   parameters result(schema);
   const std::string origin_of_file = source.empty() ? "parameter text" : source;
   for (const auto& d : schema.declarations()) {
@@ -124,8 +124,10 @@ std::string read_on_root(const std::string& path, MPI_Comm comm) {
     } else {
       std::ostringstream contents;
       contents << in.rdbuf();
-      if (in.bad()) header[0] = 1, text = "cannot read parameter file '" + path + "': read error";
-      else text = contents.str();
+      if (in.bad())
+        header[0] = 1, text = "cannot read parameter file '" + path + "': read error";
+      else
+        text = contents.str();
     }
     header[1] = static_cast<long long>(text.size());
   }
@@ -137,7 +139,7 @@ std::string read_on_root(const std::string& path, MPI_Comm comm) {
   if (header[0]) throw parameter_error(text);
   return text;
 }
-} // namespace
+}  // namespace
 
 parameters parameters::load(const parameter_schema& schema, const std::string& path,
                             const std::vector<std::string>& overrides, MPI_Comm comm) {
@@ -181,10 +183,10 @@ std::string parameters::resolved_text() const {
   std::string text = "# resolved parameters (" + sources_ + ")\n";
   for (std::size_t i = 0; i < assignments.size(); ++i) {
     const std::string& name = schema_.declarations()[i].name();
-    text += assignments[i] + std::string(width + 2 - std::min(width, assignments[i].size()), ' ') +
-            "# " + values_.at(name).origin + "\n";
+    text += assignments[i] + std::string(width + 2 - std::min(width, assignments[i].size()), ' ') + "# " +
+            values_.at(name).origin + "\n";
   }
   return text;
 }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

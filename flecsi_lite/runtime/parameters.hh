@@ -53,20 +53,24 @@ using parameter_value = std::variant<double, std::int64_t, bool, std::string, st
 /// One key of a schema: its type, default, constraints and description. The builder functions
 /// return *this so that they chain; a default that breaks the constraints is a logic_error.
 class parameter_declaration {
-public:
+ public:
   parameter_declaration(std::string name, parameter_type type, std::string description);
 
   /// The default (converted to the declared type; a mismatch is a logic_error). Keys without a
   /// default are required.
   template<class T>
   parameter_declaration& default_value(const T& value) {
-    if constexpr (std::is_same_v<T, bool>) return set_default(value);
+    if constexpr (std::is_same_v<T, bool>)
+      return set_default(value);
     else if constexpr (std::is_integral_v<T>) {
       if (type_ == parameter_type::real) return set_default(static_cast<double>(value));
       return set_default(static_cast<std::int64_t>(value));
-    } else if constexpr (std::is_floating_point_v<T>) return set_default(static_cast<double>(value));
-    else if constexpr (std::is_convertible_v<T, std::string>) return set_default(std::string(value));
-    else return set_default(std::vector<double>(value.begin(), value.end()));
+    } else if constexpr (std::is_floating_point_v<T>)
+      return set_default(static_cast<double>(value));
+    else if constexpr (std::is_convertible_v<T, std::string>)
+      return set_default(std::string(value));
+    else
+      return set_default(std::vector<double>(value.begin(), value.end()));
   }
   parameter_declaration& default_value(std::initializer_list<double> values) {
     return set_default(std::vector<double>(values));
@@ -99,7 +103,7 @@ public:
   /// e.g. "in [0, 1]", "> 0", "one of: a, b", "3 elements >= 0"; "" without constraints.
   std::string constraint_text() const;
 
-private:
+ private:
   friend class parameter_schema;
   parameter_declaration& set_default(parameter_value value);
   std::string bounds_text() const;  // e.g. "in [0, 1]", "> 0"; "" without bounds
@@ -119,7 +123,7 @@ private:
 
 /// The keys an application accepts, in declaration order.
 class parameter_schema {
-public:
+ public:
   parameter_declaration& real(const std::string& name, const std::string& description);
   parameter_declaration& integer(const std::string& name, const std::string& description);
   parameter_declaration& boolean(const std::string& name, const std::string& description);
@@ -138,24 +142,22 @@ public:
   /// One line per key: name, type, default or "required", constraints and description.
   std::string help() const;
 
-private:
-  parameter_declaration& declare(const std::string& name, parameter_type type,
-                                 const std::string& description);
+ private:
+  parameter_declaration& declare(const std::string& name, parameter_type type, const std::string& description);
   std::deque<parameter_declaration> declarations_;  // a deque keeps references valid
 };
 
 /// The resolved parameter set: every key of the schema with its value and where it came from.
 class parameters {
-public:
+ public:
   /// Defaults, then the file `path` ("" for none), then `overrides` ("key=value", as given to
   /// --set; a later one wins over an earlier one). Rank 0 reads the file and broadcasts its text;
   /// every rank parses it, so errors are identical on every rank. Collective over `comm`.
   static parameters load(const parameter_schema& schema, const std::string& path,
-                         const std::vector<std::string>& overrides = {},
-                         MPI_Comm comm = communicator());
+                         const std::vector<std::string>& overrides = {}, MPI_Comm comm = communicator());
   /// Same from text already read; `source` names it in messages. No communication.
-  static parameters parse(const parameter_schema& schema, const std::string& text,
-                          const std::string& source, const std::vector<std::string>& overrides = {});
+  static parameters parse(const parameter_schema& schema, const std::string& text, const std::string& source,
+                          const std::vector<std::string>& overrides = {});
 
   /// The value of `name` as T: double/float for reals, any integral type for integers (checked
   /// to fit), bool, std::string for strings and choices, std::vector<double> for lists.
@@ -170,7 +172,7 @@ public:
   std::string resolved_text() const;
   const parameter_schema& schema() const { return schema_; }
 
-private:
+ private:
   struct entry {
     parameter_value value;
     std::string origin;
@@ -191,10 +193,10 @@ T parameters::get(const std::string& name) const {
     return static_cast<T>(std::get<double>(lookup(name, parameter_type::real, "a floating type").value));
   } else if constexpr (std::is_integral_v<T>) {
     const std::int64_t v = std::get<std::int64_t>(lookup(name, parameter_type::integer, "an integral type").value);
-    const bool fits = std::is_signed_v<T>
-      ? v >= static_cast<std::int64_t>(std::numeric_limits<T>::min()) &&
-          (v < 0 || static_cast<std::uint64_t>(v) <= static_cast<std::uint64_t>(std::numeric_limits<T>::max()))
-      : v >= 0 && static_cast<std::uint64_t>(v) <= std::numeric_limits<T>::max();
+    const bool fits = std::is_signed_v<T> ? v >= static_cast<std::int64_t>(std::numeric_limits<T>::min()) &&
+                                              (v < 0 || static_cast<std::uint64_t>(v) <=
+                                                          static_cast<std::uint64_t>(std::numeric_limits<T>::max()))
+                                          : v >= 0 && static_cast<std::uint64_t>(v) <= std::numeric_limits<T>::max();
     if (!fits)
       throw parameter_error("parameter '" + name + "' = " + std::to_string(v) + " (" + origin(name) +
                             ") does not fit the integer type the program reads it as");
@@ -208,4 +210,4 @@ T parameters::get(const std::string& name) const {
   }
 }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

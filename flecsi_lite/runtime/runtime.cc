@@ -46,14 +46,13 @@ std::string trace_problem(const std::string& path) {
   MPI_Bcast(reason.data(), length, MPI_CHAR, 0, communicator());
   return reason;
 }
-} // namespace
+}  // namespace
 
 const settings& current_settings() { return global_settings; }
 
 void at_finalize(std::function<void()> action) { finalizers.push_back(std::move(action)); }
 
-runtime::runtime(int& argc, char**& argv, options program_options)
-  : options_(std::move(program_options)) {
+runtime::runtime(int& argc, char**& argv, options program_options) : options_(std::move(program_options)) {
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   MPI_Comm_dup(MPI_COMM_WORLD, &framework_comm);
@@ -66,7 +65,8 @@ runtime::runtime(int& argc, char**& argv, options program_options)
   static char kokkos_help[] = "--kokkos-help", hidden_help[] = "--flecsi-lite-help";
   bool kokkos_help_asked = false;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--help") == 0) argv[i] = hidden_help;
+    if (std::strcmp(argv[i], "--help") == 0)
+      argv[i] = hidden_help;
     else if (std::strcmp(argv[i], "--help-kokkos") == 0 || std::strcmp(argv[i], "--kokkos-help") == 0) {
       argv[i] = kokkos_help;
       kokkos_help_asked = true;
@@ -134,4 +134,4 @@ runtime::~runtime() {
   MPI_Finalize();
 }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

@@ -28,7 +28,7 @@ const settings& current_settings();
 void at_finalize(std::function<void()> action);
 
 class runtime {
-public:
+ public:
   runtime(int& argc, char**& argv, options program_options = options{});
   runtime(const runtime&) = delete;
   runtime& operator=(const runtime&) = delete;
@@ -40,9 +40,9 @@ public:
   int exit_code() const { return exit_code_ < 0 ? 0 : exit_code_; }
   const options& opts() const { return options_; }
 
-private:
+ private:
   options options_;
   int exit_code_ = -1;
 };
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

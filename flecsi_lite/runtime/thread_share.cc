@@ -4,8 +4,8 @@
 
 #include "flecsi_lite/runtime/log.hh"
 
-#include <Kokkos_Core.hpp>
 #include <sched.h>
+#include <Kokkos_Core.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -23,7 +23,8 @@ bool starts_with(const std::string& text, const std::string& prefix) { return te
 
 /// A positive integer, or 0 when `text` is not one.
 int positive_integer(const std::string& text) {
-  if (text.empty() || text.size() > 6 || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
+  if (text.empty() || text.size() > 6 ||
+      !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return 0;
   return std::atoi(text.c_str());
 }
@@ -58,7 +59,7 @@ int node_cores(MPI_Comm node_comm) {
   MPI_Allreduce(&mask, &node_mask, sizeof(cpu_set_t), MPI_BYTE, MPI_BOR, node_comm);
   return std::max(1, CPU_COUNT(&node_mask));
 }
-} // namespace
+}  // namespace
 
 const char* kokkos_thread_option() {
 #if KOKKOS_VERSION >= 40000
@@ -90,7 +91,8 @@ thread_choice user_thread_choice(int argc, const char* const* argv) {
     const std::string value = separate ? (i + 1 < argc ? argv[++i] : "") : argument.substr(name.size() + 1);
     choice.source = name;
     choice.threads = positive_integer(value);
-    choice.error = choice.threads > 0 ? "" : "option '" + name + "' needs a positive number of threads, not '" + value + "'";
+    choice.error =
+      choice.threads > 0 ? "" : "option '" + name + "' needs a positive number of threads, not '" + value + "'";
   }
   if (!choice.source.empty()) return choice;
   for (const char* variable : {"OMP_NUM_THREADS", "KOKKOS_NUM_THREADS"})
@@ -109,8 +111,8 @@ std::string detail::prepare_kokkos_threads(int& argc, char**& argv) {
       continue;
     }
     // Both spellings become the one this Kokkos accepts; "--option N" becomes "--option=N".
-    const std::string value =
-      argument == thread_option_name(argument) ? (i + 1 < argc ? argv[++i] : "") : argument.substr(argument.find('=') + 1);
+    const std::string value = argument == thread_option_name(argument) ? (i + 1 < argc ? argv[++i] : "")
+                                                                       : argument.substr(argument.find('=') + 1);
     if (positive_integer(value) > 0) kokkos_argument_text.push_back(option + "=" + value);
   }
   // Collective on every rank alike, whatever the user chose (the node's layout is needed anyway).
@@ -146,8 +148,10 @@ void detail::warn_if_oversubscribed(MPI_Comm comm) {
             << " cores of their node (they time-share the cores)";
   else
     warning << "on some node the MPI ranks x threads exceed the cores (they time-share the cores)";
-  if (max_threads > 1) warning << "; use fewer threads (OMP_NUM_THREADS or " << kokkos_thread_option() << "=N)";
-  else warning << "; use fewer ranks";
+  if (max_threads > 1)
+    warning << "; use fewer threads (OMP_NUM_THREADS or " << kokkos_thread_option() << "=N)";
+  else
+    warning << "; use fewer ranks";
 }
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

@@ -49,6 +49,6 @@ std::string prepare_kokkos_threads(int& argc, char**& argv);
 /// After Kokkos::initialize: rank 0 warns, once, when the ranks x threads of a node exceed its
 /// cores. Collective over `comm`.
 void warn_if_oversubscribed(MPI_Comm comm);
-} // namespace detail
+}  // namespace detail
 
-} // namespace flecsi_lite::runtime
+}  // namespace flecsi_lite::runtime

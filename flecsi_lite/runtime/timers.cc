@@ -62,15 +62,18 @@ std::vector<std::string> name_components(const std::string& name) {
     begin = end + 2;
   }
 }
-} // namespace
+}  // namespace
 
 std::string readable_name(const std::string& name) {
   std::string plain;  // without template arguments
   int depth = 0;
   for (const char c : name) {
-    if (c == '<') ++depth;
-    else if (c == '>' && depth > 0) --depth;
-    else if (depth == 0) plain += c;
+    if (c == '<')
+      ++depth;
+    else if (c == '>' && depth > 0)
+      --depth;
+    else if (depth == 0)
+      plain += c;
   }
   if (plain.find(' ') != std::string::npos && plain.find("(anonymous namespace)") == std::string::npos)
     return plain;  // a phrase ("ntree::distribute keys"), not a C++ name
@@ -118,7 +121,7 @@ void over_ranks(const std::vector<double>& mine, std::vector<double>& lo, std::v
 summary_row row_of(std::string name, long calls, double lo, double sum, double hi) {
   return {std::move(name), calls, lo, sum / runtime::size(), hi};
 }
-} // namespace
+}  // namespace
 
 std::vector<summary_row> summarize() {
   // Rank 0's names define the rows; every rank reports its own time for each (0 if unused).
@@ -158,8 +161,8 @@ void report(std::ostream& out) {
   for (auto& r : rows) width = std::max(width, r.name.size());
   for (auto& r : totals) width = std::max(width, r.name.size());
   out << "\nTimers (seconds over " << runtime::size() << " rank(s); nested timers are part of their callers')\n"
-      << std::left << std::setw(int(width)) << "timer" << std::right << std::setw(10) << "calls"
-      << std::setw(12) << "min" << std::setw(12) << "mean" << std::setw(12) << "max" << '\n';
+      << std::left << std::setw(int(width)) << "timer" << std::right << std::setw(10) << "calls" << std::setw(12)
+      << "min" << std::setw(12) << "mean" << std::setw(12) << "max" << '\n';
   out << std::fixed << std::setprecision(4);
   const auto line = [&](const summary_row& r) {
     out << std::left << std::setw(int(width)) << r.name << std::right << std::setw(10) << r.calls << std::setw(12)
@@ -170,4 +173,4 @@ void report(std::ostream& out) {
   out << std::defaultfloat;
 }
 
-} // namespace flecsi_lite::timers
+}  // namespace flecsi_lite::timers

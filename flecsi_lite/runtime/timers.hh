@@ -21,12 +21,12 @@ std::string readable_name(const std::string& name);
 
 /// Times its own lifetime into the timer `name`.
 class scoped {
-public:
+ public:
   explicit scoped(std::string name) : name_(std::move(name)), start_(clock::now()) {}
   scoped(const scoped&) = delete;
   ~scoped() { add(name_, std::chrono::duration<double>(clock::now() - start_).count()); }
 
-private:
+ private:
   using clock = std::chrono::steady_clock;
   std::string name_;
   clock::time_point start_;
@@ -34,8 +34,8 @@ private:
 
 struct summary_row {
   std::string name;
-  long calls = 0;     // on rank 0
-  double min = 0;     // over ranks, seconds
+  long calls = 0;  // on rank 0
+  double min = 0;  // over ranks, seconds
   double mean = 0;
   double max = 0;
 };
@@ -53,4 +53,4 @@ void report(std::ostream& out);
 /// Forgets every timer and restarts the wall clock.
 void clear();
 
-} // namespace flecsi_lite::timers
+}  // namespace flecsi_lite::timers

@@ -49,4 +49,4 @@ std::string nearest_name(std::string_view name, const Range& candidates) {
   return best;
 }
 
-} // namespace flecsi_lite::util
+}  // namespace flecsi_lite::util

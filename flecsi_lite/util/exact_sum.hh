@@ -9,7 +9,7 @@
 namespace flecsi_lite::util {
 
 class exact_sum {
-public:
+ public:
   // Bit k of the accumulator has weight 2^(k - 1074): the smallest subnormal is bit 0.
   static constexpr int digit_bits = 32;
   static constexpr int digits = 68;  // 2176 bits: every finite double, with room for carries
@@ -66,7 +66,7 @@ public:
     return negative ? -result : result;
   }
 
-private:
+ private:
   /// Carries so that every digit but the last lies in [0, 2^32): a unique representation.
   void normalize() {
     for (int k = 0; k + 1 < digits; ++k) {
@@ -81,4 +81,4 @@ private:
   std::int64_t pending_ = 0;
 };
 
-} // namespace flecsi_lite::util
+}  // namespace flecsi_lite::util

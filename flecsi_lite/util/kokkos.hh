@@ -8,4 +8,4 @@
 namespace flecsi_lite {
 using execution_space = Kokkos::DefaultHostExecutionSpace;
 using memory_space = execution_space::memory_space;
-} // namespace flecsi_lite
+}  // namespace flecsi_lite

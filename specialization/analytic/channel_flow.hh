@@ -14,7 +14,8 @@ inline double poiseuille_velocity(double y, double t, double L, double F, double
   double v = F / (2 * nu) * y * (L - y);
   for (int n = 0; n < terms; ++n) {
     const double k = 2 * n + 1;
-    v -= 4 * F * L * L / (nu * pi * pi * pi * k * k * k) * std::sin(k * pi * y / L) * std::exp(-k * k * pi * pi * nu * t / (L * L));
+    v -= 4 * F * L * L / (nu * pi * pi * pi * k * k * k) * std::sin(k * pi * y / L) *
+         std::exp(-k * k * pi * pi * nu * t / (L * L));
   }
   return v;
 }
@@ -31,4 +32,4 @@ inline double couette_velocity(double y, double t, double L, double v0, double n
   return v;
 }
 
-} // namespace flecsph::analytic
+}  // namespace flecsph::analytic

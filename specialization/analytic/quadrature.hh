@@ -55,4 +55,4 @@ double integrate(Function&& f, double a, double b, int panels, const gauss_legen
   return sum;
 }
 
-} // namespace flecsph::analytic
+}  // namespace flecsph::analytic

@@ -15,9 +15,13 @@ namespace {
 /// Toro's gamma-dependent constants G1..G7 (sec. 4.9).
 struct gamma_constants {
   explicit gamma_constants(double gamma)
-    : g1((gamma - 1.0) / (2.0 * gamma)), g2((gamma + 1.0) / (2.0 * gamma)),
-      g3(2.0 * gamma / (gamma - 1.0)), g4(2.0 / (gamma - 1.0)), g5(2.0 / (gamma + 1.0)),
-      g6((gamma - 1.0) / (gamma + 1.0)), g7((gamma - 1.0) / 2.0) {}
+      : g1((gamma - 1.0) / (2.0 * gamma)),
+        g2((gamma + 1.0) / (2.0 * gamma)),
+        g3(2.0 * gamma / (gamma - 1.0)),
+        g4(2.0 / (gamma - 1.0)),
+        g5(2.0 / (gamma + 1.0)),
+        g6((gamma - 1.0) / (gamma + 1.0)),
+        g7((gamma - 1.0) / 2.0) {}
   double g1, g2, g3, g4, g5, g6, g7;
 };
 
@@ -27,8 +31,7 @@ struct function_and_derivative {
 };
 
 /// f_K(p) of (4.6)-(4.7) for the side K with state `side` and sound speed a, and df_K/dp.
-function_and_derivative pressure_function(double p, const riemann_state& side, double a,
-                                          const gamma_constants& g) {
+function_and_derivative pressure_function(double p, const riemann_state& side, double a, const gamma_constants& g) {
   if (p > side.P) {  // shock: Rankine-Hugoniot jump, A_K = 2/((gamma+1) rho_K), B_K = G6 p_K
     const double A = g.g5 / side.rho;
     const double B = g.g6 * side.P;
@@ -41,17 +44,16 @@ function_and_derivative pressure_function(double p, const riemann_state& side, d
 
 /// Starting value of the Newton iteration: Toro's adaptive choice among the primitive-variable,
 /// two-rarefaction and two-shock approximations (sec. 9.5.1 / subroutine GUESSP).
-double initial_pressure_guess(const riemann_state& left, const riemann_state& right,
-                              double a_left, double a_right, const gamma_constants& g) {
+double initial_pressure_guess(const riemann_state& left, const riemann_state& right, double a_left, double a_right,
+                              const gamma_constants& g) {
   const double density_sound = 0.25 * (left.rho + right.rho) * (a_left + a_right);
-  const double p_pvrs =
-    std::max(0.0, 0.5 * (left.P + right.P) + 0.5 * (left.v - right.v) * density_sound);
+  const double p_pvrs = std::max(0.0, 0.5 * (left.P + right.P) + 0.5 * (left.v - right.v) * density_sound);
   const double p_min = std::min(left.P, right.P), p_max = std::max(left.P, right.P);
   if (p_max / p_min <= 2.0 && p_min <= p_pvrs && p_pvrs <= p_max) return p_pvrs;
   if (p_pvrs < p_min) {  // two-rarefaction approximation
     const double pq = std::pow(left.P / right.P, g.g1);
-    const double u_star = (pq * left.v / a_left + right.v / a_right + g.g4 * (pq - 1.0)) /
-                          (pq / a_left + 1.0 / a_right);
+    const double u_star =
+      (pq * left.v / a_left + right.v / a_right + g.g4 * (pq - 1.0)) / (pq / a_left + 1.0 / a_right);
     const double factor_left = 1.0 + g.g7 * (left.v - u_star) / a_left;
     const double factor_right = 1.0 + g.g7 * (u_star - right.v) / a_right;
     return 0.5 * (left.P * std::pow(factor_left, g.g3) + right.P * std::pow(factor_right, g.g3));
@@ -59,8 +61,8 @@ double initial_pressure_guess(const riemann_state& left, const riemann_state& ri
   // two-shock approximation around the PVRS value
   const double weight_left = std::sqrt((g.g5 / left.rho) / (g.g6 * left.P + p_pvrs));
   const double weight_right = std::sqrt((g.g5 / right.rho) / (g.g6 * right.P + p_pvrs));
-  return std::max(1e-12 * p_min, (weight_left * left.P + weight_right * right.P -
-                                  (right.v - left.v)) / (weight_left + weight_right));
+  return std::max(1e-12 * p_min,
+                  (weight_left * left.P + weight_right * right.P - (right.v - left.v)) / (weight_left + weight_right));
 }
 
 void check_state(const riemann_state& state, const char* side) {
@@ -77,15 +79,14 @@ void check_state(const riemann_state& state, const char* side) {
 
 constexpr riemann_state vacuum_state{0.0, 0.0, 0.0};
 
-} // namespace
+}  // namespace
 
 double specific_internal_energy(const riemann_state& state, double gamma) {
   return state.rho > 0.0 ? state.P / ((gamma - 1.0) * state.rho) : 0.0;
 }
 
-riemann_solution::riemann_solution(const riemann_state& left, const riemann_state& right,
-                                   double gamma)
-  : left_(left), right_(right), gamma_(gamma) {
+riemann_solution::riemann_solution(const riemann_state& left, const riemann_state& right, double gamma)
+    : left_(left), right_(right), gamma_(gamma) {
   if (!(gamma > 1.0)) throw std::invalid_argument("gamma must be > 1");
   check_state(left, "left");
   check_state(right, "right");
@@ -112,8 +113,7 @@ riemann_solution::riemann_solution(const riemann_state& left, const riemann_stat
   }
   if (front_left <= front_right) {  // pressure positivity condition (4.40) fails
     vacuum_ = true;
-    speeds_ = {left.v - sound_left_, front_left, 0.5 * (front_left + front_right), front_right,
-               right.v + sound_right_};
+    speeds_ = {left.v - sound_left_, front_left, 0.5 * (front_left + front_right), front_right, right.v + sound_right_};
     return;
   }
 
@@ -129,8 +129,7 @@ riemann_solution::riemann_solution(const riemann_state& left, const riemann_stat
   for (iterations_ = 1; iterations_ <= max_iterations; ++iterations_) {
     const auto f_left = pressure_function(p, left, sound_left_, g);
     const auto f_right = pressure_function(p, right, sound_right_, g);
-    double p_new = p - (f_left.value + f_right.value + velocity_jump) /
-                         (f_left.derivative + f_right.derivative);
+    double p_new = p - (f_left.value + f_right.value + velocity_jump) / (f_left.derivative + f_right.derivative);
     if (p_new <= 0.0) p_new = 0.1 * p;
     const double change = 2.0 * std::fabs(p_new - p) / (p_new + p);
     p = p_new;
@@ -139,8 +138,7 @@ riemann_solution::riemann_solution(const riemann_state& left, const riemann_stat
       break;
     }
   }
-  if (!converged)
-    throw std::runtime_error("exact Riemann solver: Newton iteration for p* did not converge");
+  if (!converged) throw std::runtime_error("exact Riemann solver: Newton iteration for p* did not converge");
 
   star_pressure_ = p;
   const auto f_left = pressure_function(p, left, sound_left_, g);
@@ -209,9 +207,8 @@ riemann_state riemann_solution::sample(double x_over_t) const {
   return x_over_t <= star_velocity_ ? sample_left(x_over_t) : sample_right(x_over_t);
 }
 
-riemann_solution solve_riemann_problem(const riemann_state& left, const riemann_state& right,
-                                       double gamma) {
+riemann_solution solve_riemann_problem(const riemann_state& left, const riemann_state& right, double gamma) {
   return riemann_solution(left, right, gamma);
 }
 
-} // namespace flecsph::analytic
+}  // namespace flecsph::analytic

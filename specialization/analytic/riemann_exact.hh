@@ -31,16 +31,14 @@ struct wave_speeds {
 
 /// The solution of one Riemann problem; sample() gives the state at any x/t.
 class riemann_solution {
-public:
+ public:
   riemann_solution(const riemann_state& left, const riemann_state& right, double gamma);
 
   /// State at similarity coordinate x/t (x measured from the initial discontinuity).
   riemann_state sample(double x_over_t) const;
 
   /// State at position x and time t > 0 for a discontinuity initially at x0.
-  riemann_state at(double x, double t, double x0 = 0.0) const {
-    return sample((x - x0) / t);
-  }
+  riemann_state at(double x, double t, double x0 = 0.0) const { return sample((x - x0) / t); }
 
   double star_pressure() const { return star_pressure_; }
   double star_velocity() const { return star_velocity_; }
@@ -55,7 +53,7 @@ public:
   int iterations() const { return iterations_; }
   double gamma() const { return gamma_; }
 
-private:
+ private:
   riemann_state sample_left(double s) const;
   riemann_state sample_right(double s) const;
 
@@ -72,7 +70,6 @@ private:
 
 /// Solves the Riemann problem; throws std::invalid_argument for gamma <= 1, negative density or
 /// pressure, or a side with zero density and non-zero pressure.
-riemann_solution solve_riemann_problem(const riemann_state& left, const riemann_state& right,
-                                       double gamma);
+riemann_solution solve_riemann_problem(const riemann_state& left, const riemann_state& right, double gamma);
 
-} // namespace flecsph::analytic
+}  // namespace flecsph::analytic

@@ -21,19 +21,16 @@ constexpr double pi = 3.14159265358979323846;
 }
 
 sedov_taylor::sedov_taylor(int dimension, double gamma, double energy, double rho0)
-  : dimension_(dimension), gamma_(gamma), energy_(energy), rho0_(rho0) {
+    : dimension_(dimension), gamma_(gamma), energy_(energy), rho0_(rho0) {
   if (dimension < 1 || dimension > 3)
-    throw std::invalid_argument("Sedov-Taylor: dimension must be 1, 2 or 3, not " +
-                                std::to_string(dimension));
-  if (!(gamma > 1.0) || !std::isfinite(gamma))
-    throw std::invalid_argument("Sedov-Taylor: gamma must be > 1");
+    throw std::invalid_argument("Sedov-Taylor: dimension must be 1, 2 or 3, not " + std::to_string(dimension));
+  if (!(gamma > 1.0) || !std::isfinite(gamma)) throw std::invalid_argument("Sedov-Taylor: gamma must be > 1");
   if (dimension == 3 && !(gamma < 7.0))
-    throw std::invalid_argument("Sedov-Taylor: gamma must be < 7 in 3D (gamma >= 7 gives the "
-                                "singular and vacuum families, which are not implemented)");
-  if (!(energy > 0.0) || !std::isfinite(energy))
-    throw std::invalid_argument("Sedov-Taylor: energy must be > 0");
-  if (!(rho0 > 0.0) || !std::isfinite(rho0))
-    throw std::invalid_argument("Sedov-Taylor: rho0 must be > 0");
+    throw std::invalid_argument(
+      "Sedov-Taylor: gamma must be < 7 in 3D (gamma >= 7 gives the "
+      "singular and vacuum families, which are not implemented)");
+  if (!(energy > 0.0) || !std::isfinite(energy)) throw std::invalid_argument("Sedov-Taylor: energy must be > 0");
+  if (!(rho0 > 0.0) || !std::isfinite(rho0)) throw std::invalid_argument("Sedov-Taylor: rho0 must be > 0");
 
   const double j = dimension, g = gamma;
   // Within 1e-7 of gamma = 2 the regular exponents alpha4, alpha5 ~ 2/(2-gamma) lose accuracy;
@@ -49,13 +46,12 @@ sedov_taylor::sedov_taylor(int dimension, double gamma, double energy, double rh
   const double omega2_term = 2.0 * (g - 1.0) + j;  // gamma (omega2 - omega), eqs. 42-47
   alpha0_ = 2.0 / (j + 2.0);
   alpha2_ = -(g - 1.0) / omega2_term;
-  alpha1_ = (j + 2.0) * g / (2.0 + j * (g - 1.0)) *
-            (2.0 * j * (2.0 - g) / (g * (j + 2.0) * (j + 2.0)) - alpha2_);
+  alpha1_ = (j + 2.0) * g / (2.0 + j * (g - 1.0)) * (2.0 * j * (2.0 - g) / (g * (j + 2.0) * (j + 2.0)) - alpha2_);
   alpha3_ = j / omega2_term;
   alpha4_ = omega3_singular_ ? 0.0 : alpha1_ * (j + 2.0) / (2.0 - g);
   alpha5_ = omega3_singular_ ? 0.0 : -2.0 / (2.0 - g);
 
-  v0_ = 2.0 / ((j + 2.0) * g);        // eq. 23
+  v0_ = 2.0 / ((j + 2.0) * g);          // eq. 23
   v2_ = 4.0 / ((j + 2.0) * (g + 1.0));  // eq. 17
 
   // Energy integral: E = A_D R^D int_0^R [rho v^2/2 + P/(gamma-1)] (r/R)^(D-1) dr/R with
@@ -64,8 +60,7 @@ sedov_taylor::sedov_taylor(int dimension, double gamma, double energy, double rh
   const gauss_legendre_rule rule(20);
   auto integrand = [&](double s) {
     const point p = evaluate(s);
-    return (p.values.g * p.values.f * p.values.f + p.values.h) *
-           std::pow(p.lambda, dimension_ - 1) * p.dlambda_ds;
+    return (p.values.g * p.values.f * p.values.f + p.values.h) * std::pow(p.lambda, dimension_ - 1) * p.dlambda_ds;
   };
   double integral = integrate(integrand, 0.0, 1.0, 4, rule);
   for (int panels = 8; panels <= 4096; panels *= 2) {
@@ -99,18 +94,15 @@ sedov_taylor::point sedov_taylor::evaluate(double s) const {
   if (omega3_singular_) {  // Kamm & Timmes, omega = omega3 forms (x3 = x4 at gamma = 2)
     const double exponent = -j * g * (g + 1.0) * (1.0 - x1) / (2.0 * e_ * ((g + 1.0) / 2.0 - x1));
     result.values.g = std::exp(alpha3_ * log_x2 + (1.0 - 2.0 / e_) * log_x4 + exponent);
-    result.values.h =
-      std::exp(alpha0_ * j * log_x1 + (j * (g - 1.0) - g) / e_ * log_x4 + exponent);
+    result.values.h = std::exp(alpha0_ * j * log_x1 + (j * (g - 1.0) - g) / e_ * log_x4 + exponent);
   } else {
     result.values.g = std::exp(alpha3_ * log_x2 + alpha4_ * log_x3 + alpha5_ * log_x4);
-    result.values.h = std::exp(alpha0_ * j * log_x1 + (alpha4_ - 2.0 * alpha1_) * log_x3 +
-                               (1.0 + alpha5_) * log_x4);
+    result.values.h = std::exp(alpha0_ * j * log_x1 + (alpha4_ - 2.0 * alpha1_) * log_x3 + (1.0 + alpha5_) * log_x4);
   }
   if (s > 0.0) {
     // d ln(lambda)/ds: the x2 factor contributes exactly 1/s; x1 and x3 through dV/ds.
     const double dV_ds = (v2_ - v0_) / p * s_power / s;
-    result.dlambda_ds =
-      result.lambda * ((-alpha0_ / V + alpha1_ * e_ / (1.0 - e_ * V)) * dV_ds + 1.0 / s);
+    result.dlambda_ds = result.lambda * ((-alpha0_ / V + alpha1_ * e_ / (1.0 - e_ * V)) * dV_ds + 1.0 / s);
   }
   return result;
 }
@@ -127,8 +119,7 @@ double sedov_taylor::parameter_of(double lambda) const {
 }
 
 sedov_similarity sedov_taylor::similarity(double lambda) const {
-  if (!(lambda >= 0.0 && lambda <= 1.0))
-    throw std::invalid_argument("Sedov-Taylor: lambda = r/R must lie in [0, 1]");
+  if (!(lambda >= 0.0 && lambda <= 1.0)) throw std::invalid_argument("Sedov-Taylor: lambda = r/R must lie in [0, 1]");
   if (lambda == 1.0) return {1.0, 1.0, 1.0};
   return evaluate(lambda == 0.0 ? 0.0 : parameter_of(lambda)).values;
 }
@@ -138,14 +129,11 @@ double sedov_taylor::shock_radius(double t) const {
   return xi0_ * std::pow(energy_ * t * t / rho0_, 1.0 / (dimension_ + 2.0));
 }
 
-double sedov_taylor::shock_velocity(double t) const {
-  return 2.0 * shock_radius(t) / ((dimension_ + 2.0) * t);
-}
+double sedov_taylor::shock_velocity(double t) const { return 2.0 * shock_radius(t) / ((dimension_ + 2.0) * t); }
 
 sedov_state sedov_taylor::post_shock(double t) const {
   const double U = shock_velocity(t);
-  return {rho0_ * (gamma_ + 1.0) / (gamma_ - 1.0), 2.0 * U / (gamma_ + 1.0),
-          2.0 * rho0_ * U * U / (gamma_ + 1.0)};
+  return {rho0_ * (gamma_ + 1.0) / (gamma_ - 1.0), 2.0 * U / (gamma_ + 1.0), 2.0 * rho0_ * U * U / (gamma_ + 1.0)};
 }
 
 sedov_state sedov_taylor::at(double r, double t) const {
@@ -158,9 +146,8 @@ sedov_state sedov_taylor::at(double r, double t) const {
 }
 
 double sedov_taylor::specific_internal_energy(const sedov_state& state) const {
-  if (state.rho == 0.0)
-    return state.P == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  if (state.rho == 0.0) return state.P == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
   return state.P / ((gamma_ - 1.0) * state.rho);
 }
 
-} // namespace flecsph::analytic
+}  // namespace flecsph::analytic

@@ -27,7 +27,7 @@ struct sedov_similarity {
 /// "vacuum" family of Kamm & Timmes, which is not implemented). gamma = 2 is the removable
 /// singularity omega = omega3 of Kamm & Timmes and uses their special forms.
 class sedov_taylor {
-public:
+ public:
   sedov_taylor(int dimension, double gamma, double energy, double rho0);
 
   int dimension() const { return dimension_; }
@@ -52,7 +52,7 @@ public:
   /// Specific internal energy P / ((gamma-1) rho); +infinity at the centre, where rho = 0.
   double specific_internal_energy(const sedov_state& state) const;
 
-private:
+ private:
   struct point {  // the parametric solution at one value of the parameter s in (0, 1]
     double lambda;
     double dlambda_ds;
@@ -71,4 +71,4 @@ private:
   double alpha_, xi0_;
 };
 
-} // namespace flecsph::analytic
+}  // namespace flecsph::analytic

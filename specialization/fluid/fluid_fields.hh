@@ -20,8 +20,8 @@ struct fluid_fields {
   static inline const definition<double> density_half{"fluid_density_half"};  ///< leapfrog half step
   /// A wall particle's own (prescribed) velocity: zero for fixed walls, the lid's for Couette. Its
   /// `velocity` field holds the extrapolated no-slip velocity 2 v_w - v~ (Adami et al. 2012 eq. 22).
-  static inline const definition<vector<D>> wall_velocity{
-    "fluid_wall_velocity", sph::persist::as("wall_vx", "wall_vy", "wall_vz").restart()};
+  static inline const definition<vector<D>> wall_velocity{"fluid_wall_velocity",
+                                                          sph::persist::as("wall_vx", "wall_vy", "wall_vz").restart()};
 };
 
-} // namespace flecsph::fluid
+}  // namespace flecsph::fluid

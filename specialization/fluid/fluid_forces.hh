@@ -101,7 +101,7 @@ void fluid_rates(const sph::neighbour_walk<D>& walk, std::size_t a, const rate_f
   for (int k = 0; k < D; ++k) dv_dt[k] = sum_v[k] + settings.body_force[k];
   drho_dt = summation ? 0.0 : rho_a * sum_rho + diffusion * sum_delta;
 }
-} // namespace detail
+}  // namespace detail
 
 /// Accelerations and drho/dt of the owned fluid particles (walls get zero), and the smallest
 /// time step of them: min(courant h / (c + |v|), acceleration_factor sqrt(h / |a|),
@@ -118,8 +118,8 @@ double compute_fluid_rates(sph::neighbours_ro<D> neighbours_object, physics::ker
                            sph::wo<double> density_rate) {
   const sph::neighbourhood<D>& neighbours = *neighbours_object;
   const sph::neighbour_walk<D> walk(neighbours);
-  const detail::rate_fields<D> in{x.data(), v.data(), wall_velocity.data(), m.data(), h.data(),
-                                  rho.data(), P.data(), cs.data(), kind.data()};
+  const detail::rate_fields<D> in{x.data(), v.data(),  wall_velocity.data(), m.data(), h.data(), rho.data(),
+                                  P.data(), cs.data(), kind.data()};
   const bool summation = settings.density == density_method::summation;
   const double nu = settings.kinematic_viscosity();
   double smallest = std::numeric_limits<double>::max();
@@ -151,4 +151,4 @@ double compute_fluid_rates(sph::neighbours_ro<D> neighbours_object, physics::ker
   return smallest;
 }
 
-} // namespace flecsph::fluid
+}  // namespace flecsph::fluid

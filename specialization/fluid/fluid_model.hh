@@ -32,29 +32,32 @@ struct fluid_state : sph::app_state<D> {
 /// state variable: rho_half = rho + dt/2 drho/dt, then rho predicted to the full step. Walls move
 /// with their prescribed velocity (a moving lid) and are never kicked.
 template<int D>
-void fluid_kick_drift(double dt, sph::tree::domain<D> space, sph::ro<sph::particle_kind> kind,
-                      sph::rw<vector<D>> x, sph::rw<vector<D>> v, sph::wo<vector<D>> v_half, sph::rw<double> rho,
-                      sph::wo<double> rho_half, sph::ro<vector<D>> acceleration, sph::ro<double> density_rate,
-                      sph::ro<vector<D>> wall_velocity, sph::rw<double> drift) {
+void fluid_kick_drift(double dt, sph::tree::domain<D> space, sph::ro<sph::particle_kind> kind, sph::rw<vector<D>> x,
+                      sph::rw<vector<D>> v, sph::wo<vector<D>> v_half, sph::rw<double> rho, sph::wo<double> rho_half,
+                      sph::ro<vector<D>> acceleration, sph::ro<double> density_rate, sph::ro<vector<D>> wall_velocity,
+                      sph::rw<double> drift) {
   const double half = 0.5 * dt;
-  flecsi_lite::forall(x.size(), [&](std::size_t a) {
-    const bool fluid = kind(a) == sph::particle_kind::fluid;
-    vector<D> velocity;
-    double speed2 = 0;
-    for (int k = 0; k < D; ++k) {
-      velocity[k] = fluid ? v(a)[k] + half * acceleration(a)[k] : wall_velocity(a)[k];
-      x(a)[k] += dt * velocity[k];
-      speed2 += velocity[k] * velocity[k];
-    }
-    drift(a) += dt * std::sqrt(speed2);
-    sph::wrap_periodic<D>(space, x(a));
-    v_half(a) = velocity;
-    rho_half(a) = rho(a);
-    if (!fluid) return;
-    for (int k = 0; k < D; ++k) v(a)[k] = velocity[k] + half * acceleration(a)[k];
-    rho_half(a) = rho(a) + half * density_rate(a);
-    rho(a) = rho_half(a) + half * density_rate(a);
-  }, "fluid::kick_drift");
+  flecsi_lite::forall(
+    x.size(),
+    [&](std::size_t a) {
+      const bool fluid = kind(a) == sph::particle_kind::fluid;
+      vector<D> velocity;
+      double speed2 = 0;
+      for (int k = 0; k < D; ++k) {
+        velocity[k] = fluid ? v(a)[k] + half * acceleration(a)[k] : wall_velocity(a)[k];
+        x(a)[k] += dt * velocity[k];
+        speed2 += velocity[k] * velocity[k];
+      }
+      drift(a) += dt * std::sqrt(speed2);
+      sph::wrap_periodic<D>(space, x(a));
+      v_half(a) = velocity;
+      rho_half(a) = rho(a);
+      if (!fluid) return;
+      for (int k = 0; k < D; ++k) v(a)[k] = velocity[k] + half * acceleration(a)[k];
+      rho_half(a) = rho(a) + half * density_rate(a);
+      rho(a) = rho_half(a) + half * density_rate(a);
+    },
+    "fluid::kick_drift");
 }
 
 /// Second half kick: v and (by continuity) rho from the half step with the new rates.
@@ -63,22 +66,28 @@ void fluid_kick(double dt, bool continuity, sph::ro<sph::particle_kind> kind, sp
                 sph::ro<double> rho_half, sph::ro<vector<D>> acceleration, sph::ro<double> density_rate,
                 sph::rw<vector<D>> v, sph::rw<double> rho) {
   const double half = 0.5 * dt;
-  flecsi_lite::forall(v.size(), [&](std::size_t a) {
-    if (kind(a) != sph::particle_kind::fluid) return;
-    for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + half * acceleration(a)[k];
-    if (continuity) rho(a) = rho_half(a) + half * density_rate(a);
-  }, "fluid::kick");
+  flecsi_lite::forall(
+    v.size(),
+    [&](std::size_t a) {
+      if (kind(a) != sph::particle_kind::fluid) return;
+      for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + half * acceleration(a)[k];
+      if (continuity) rho(a) = rho_half(a) + half * density_rate(a);
+    },
+    "fluid::kick");
 }
 
 /// P and c of the fluid particles by the Tait EOS (walls: extrapolate_wall_state).
 template<int D>
 void fluid_pressure(physics::tait eos, sph::ro<sph::particle_kind> kind, sph::ro<double> rho, sph::wo<double> P,
                     sph::wo<double> cs) {
-  flecsi_lite::forall(rho.size(), [&](std::size_t a) {
-    if (kind(a) != sph::particle_kind::fluid) return;
-    P(a) = eos.pressure(rho(a));
-    cs(a) = eos.sound_speed(rho(a));
-  }, "fluid::pressure");
+  flecsi_lite::forall(
+    rho.size(),
+    [&](std::size_t a) {
+      if (kind(a) != sph::particle_kind::fluid) return;
+      P(a) = eos.pressure(rho(a));
+      cs(a) = eos.sound_speed(rho(a));
+    },
+    "fluid::pressure");
 }
 
 template<int D>
@@ -128,10 +137,9 @@ flecsi_lite::control::control_model<State> make_fluid_control_model(sph::app_pro
   });
   m.replace("advance", "kick_drift", [](State& s) {
     auto& p = *s.particles;
-    flecsi_lite::execute<fluid_kick_drift<D>>(s.dt, p.space(), f::kind(p), f::position()(p), f::velocity(p),
-                                              f::velocity_half(p), f::density(p), ff::density_half(p),
-                                              f::acceleration(p), ff::density_rate(p), ff::wall_velocity(p),
-                                              f::drift(p));
+    flecsi_lite::execute<fluid_kick_drift<D>>(
+      s.dt, p.space(), f::kind(p), f::position()(p), f::velocity(p), f::velocity_half(p), f::density(p),
+      ff::density_half(p), f::acceleration(p), ff::density_rate(p), ff::wall_velocity(p), f::drift(p));
   });
   m.replace("advance", "density", [](State& s) { update_fluid_density<D>(s); });
   m.replace("advance", "equation_of_state", [](State& s) { update_fluid_pressure<D>(s); });
@@ -145,4 +153,4 @@ flecsi_lite::control::control_model<State> make_fluid_control_model(sph::app_pro
   return m;
 }
 
-} // namespace flecsph::fluid
+}  // namespace flecsph::fluid

@@ -39,25 +39,27 @@ rt::parameter_block<fluid_settings> declare() {
     .range(0, 1e50);
   p.choice("density_method", &fluid_settings::density, density_method_names(),
            "continuity (drho/dt) or summation (sum m W)");
-  p.real("delta_sph", &fluid_settings::delta, "delta of the Molteni-Colagrossi density diffusion (0: off)")
-    .range(0, 1);
+  p.real("delta_sph", &fluid_settings::delta, "delta of the Molteni-Colagrossi density diffusion (0: off)").range(0, 1);
   p.choice("fluid_viscosity", &fluid_settings::viscosity, viscosity_model_names(),
            "laminar (Morris et al. 1997) or artificial (Monaghan 1992)");
   p.real("dynamic_viscosity", &fluid_settings::dynamic_viscosity, "mu = rho0 nu of the laminar viscosity")
     .range(0, 1e50);
   p.real("artificial_viscosity_alpha", &fluid_settings::artificial_alpha, "alpha of the artificial viscosity")
     .range(0, 10);
-  p.real("body_force_x", [](fluid_settings& s) -> double& { return s.body_force[0]; }, "body force (acceleration) x")
+  p.real(
+     "body_force_x", [](fluid_settings& s) -> double& { return s.body_force[0]; }, "body force (acceleration) x")
     .range(-1e50, 1e50);
-  p.real("body_force_y", [](fluid_settings& s) -> double& { return s.body_force[1]; }, "body force y (gravity: -9.81)")
+  p.real(
+     "body_force_y", [](fluid_settings& s) -> double& { return s.body_force[1]; }, "body force y (gravity: -9.81)")
     .range(-1e50, 1e50);
-  p.real("body_force_z", [](fluid_settings& s) -> double& { return s.body_force[2]; }, "body force z")
+  p.real(
+     "body_force_z", [](fluid_settings& s) -> double& { return s.body_force[2]; }, "body force z")
     .range(-1e50, 1e50);
   p.real("viscous_factor", &fluid_settings::viscous_factor, "dt <= factor h^2 / nu").greater_than(0).at_most(1);
   p.choice("wall_condition", &fluid_settings::walls, wall_condition_names(), "no_slip or free_slip walls");
   return p;
 }
-} // namespace
+}  // namespace
 
 const rt::parameter_block<fluid_settings>& fluid_parameters() {
   static const auto block = declare();
@@ -74,4 +76,4 @@ void check_sound_speed(const std::string& program, const fluid_settings& setting
     flecsi_lite::log::warn() << m.str() << ": below 10 times it, density varies by more than ~1% (raise c0)";
 }
 
-} // namespace flecsph::fluid
+}  // namespace flecsph::fluid

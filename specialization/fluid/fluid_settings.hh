@@ -26,10 +26,10 @@ struct fluid_settings {
   /// delta of the Molteni & Colagrossi (2009) diffusion (0: off), hydrostatic part subtracted.
   double delta = 0.1;
   viscosity_model viscosity = viscosity_model::laminar;
-  double dynamic_viscosity = 0;  ///< mu = rho0 nu (laminar)
-  double artificial_alpha = 0.01;  ///< alpha (artificial)
+  double dynamic_viscosity = 0;               ///< mu = rho0 nu (laminar)
+  double artificial_alpha = 0.01;             ///< alpha (artificial)
   std::array<double, 3> body_force{0, 0, 0};  ///< g (acceleration, zeros beyond D)
-  double viscous_factor = 0.125;  ///< dt <= factor h^2 / nu
+  double viscous_factor = 0.125;              ///< dt <= factor h^2 / nu
   wall_condition walls = wall_condition::no_slip;
   /// The largest speed the problem expects (its key or its estimate): c0 must exceed it tenfold.
   double expected_speed = 0;
@@ -49,4 +49,4 @@ const flecsi_lite::runtime::parameter_block<fluid_settings>& fluid_parameters();
 /// parameter_error when c0 is not above it at all.
 void check_sound_speed(const std::string& program, const fluid_settings& settings);
 
-} // namespace flecsph::fluid
+}  // namespace flecsph::fluid

@@ -14,4 +14,4 @@ std::string_view eos_name(eos_type type) { return eos_names().name(type); }
 
 eos_type eos_from_name(std::string_view name) { return eos_names().value(name); }
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

@@ -15,9 +15,7 @@ namespace flecsph::physics {
 struct ideal_gas {
   double gamma = 5.0 / 3.0;
 
-  KOKKOS_INLINE_FUNCTION double pressure(double rho, double u) const {
-    return (gamma - 1.0) * rho * u;
-  }
+  KOKKOS_INLINE_FUNCTION double pressure(double rho, double u) const { return (gamma - 1.0) * rho * u; }
   /// sqrt(gamma P / rho) = sqrt(gamma (gamma-1) u).
   KOKKOS_INLINE_FUNCTION double sound_speed(double /*rho*/, double u) const {
     return std::sqrt(gamma * (gamma - 1.0) * u);
@@ -38,13 +36,11 @@ struct polytropic {
   }
   /// sqrt(dP/drho) = sqrt(Gamma P / rho).
   KOKKOS_INLINE_FUNCTION double sound_speed(double rho, double /*u*/ = 0.0) const {
-    return std::sqrt(polytropic_exponent * polytropic_constant *
-                     std::pow(rho, polytropic_exponent - 1.0));
+    return std::sqrt(polytropic_exponent * polytropic_constant * std::pow(rho, polytropic_exponent - 1.0));
   }
   /// u = K rho^(Gamma-1) / (Gamma-1), the internal energy consistent with the first law.
   KOKKOS_INLINE_FUNCTION double internal_energy(double rho) const {
-    return polytropic_constant * std::pow(rho, polytropic_exponent - 1.0) /
-           (polytropic_exponent - 1.0);
+    return polytropic_constant * std::pow(rho, polytropic_exponent - 1.0) / (polytropic_exponent - 1.0);
   }
 };
 
@@ -81,20 +77,26 @@ struct equation_of_state {
 
   KOKKOS_INLINE_FUNCTION double pressure(double rho, double u) const {
     switch (type) {
-    case eos_type::polytropic: return polytrope.pressure(rho, u);
-    case eos_type::isothermal: return constant_temperature.pressure(rho, u);
-    case eos_type::ideal_gas: break;
+      case eos_type::polytropic:
+        return polytrope.pressure(rho, u);
+      case eos_type::isothermal:
+        return constant_temperature.pressure(rho, u);
+      case eos_type::ideal_gas:
+        break;
     }
     return ideal.pressure(rho, u);
   }
   KOKKOS_INLINE_FUNCTION double sound_speed(double rho, double u) const {
     switch (type) {
-    case eos_type::polytropic: return polytrope.sound_speed(rho, u);
-    case eos_type::isothermal: return constant_temperature.sound_speed(rho, u);
-    case eos_type::ideal_gas: break;
+      case eos_type::polytropic:
+        return polytrope.sound_speed(rho, u);
+      case eos_type::isothermal:
+        return constant_temperature.sound_speed(rho, u);
+      case eos_type::ideal_gas:
+        break;
     }
     return ideal.sound_speed(rho, u);
   }
 };
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

@@ -18,8 +18,7 @@ namespace flecsph::physics {
 using symmetric_tensor = std::array<double, 6>;
 
 inline symmetric_tensor quadrupole_second_derivative(double m, const std::array<double, 3>& x,
-                                                     const std::array<double, 3>& v,
-                                                     const std::array<double, 3>& a) {
+                                                     const std::array<double, 3>& v, const std::array<double, 3>& a) {
   const auto term = [&](int i, int j) { return m * (2 * v[i] * v[j] + x[i] * a[j] + a[i] * x[j]); };
   return {term(0, 0), term(1, 1), term(2, 2), term(0, 1), term(0, 2), term(1, 2)};
 }
@@ -39,4 +38,4 @@ inline polarisations strain_on_z_axis(const symmetric_tensor& second_derivative,
   return {scale * (second_derivative[0] - second_derivative[1]), 2 * scale * second_derivative[3]};
 }
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

@@ -42,8 +42,10 @@ struct polynomial {
 /// p^K.
 template<std::size_t K, std::size_t N>
 constexpr auto polynomial_power(const polynomial<N>& p) {
-  if constexpr (K == 0) return polynomial<1>{{1.0}};
-  else return p * polynomial_power<K - 1>(p);
+  if constexpr (K == 0)
+    return polynomial<1>{{1.0}};
+  else
+    return p * polynomial_power<K - 1>(p);
 }
 
 /// The 3D shape f(q) of a kernel as polynomial pieces in q: piece k holds on
@@ -76,7 +78,7 @@ constexpr std::array<std::array<double, Power + TailTerms>, 1> wendland_piece(
   for (std::size_t n = 0; n < TailTerms; ++n, half_power *= 0.5) in_q.c[n] = tail[n] * half_power;
   return {(polynomial_power<Power>(polynomial<2>{{1.0, -0.5}}) * in_q).c};
 }
-} // namespace detail
+}  // namespace detail
 
 /// Wendland C2 in 3D: (1 - s)^4 (1 + 4 s), s = q/2.
 template<>
@@ -165,7 +167,7 @@ constexpr auto integrate_softening() {
 
 template<class Shape>
 inline constexpr auto softening_table = integrate_softening<Shape>();
-} // namespace detail
+}  // namespace detail
 
 /// The softened potential, force and h-derivative of the 3D kernel of `Shape` (see the top).
 template<class Shape>
@@ -208,7 +210,7 @@ struct softened_gravity {
     return -inverse_h * inverse_h * (p.potential_constant + q * q * detail::series(p.h_term, q));
   }
 
-private:
+ private:
   KOKKOS_INLINE_FUNCTION static const piece& piece_at(double q) {
     const auto& table = detail::softening_table<Shape>;
     std::size_t k = 0;
@@ -217,4 +219,4 @@ private:
   }
 };
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

@@ -17,4 +17,4 @@ std::string_view kernel_name(kernel_type type) { return kernel_names().name(type
 
 kernel_type kernel_from_name(std::string_view name) { return kernel_names().value(name); }
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

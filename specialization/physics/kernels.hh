@@ -14,9 +14,8 @@ namespace flecsph::physics {
 
 enum class kernel_type { cubic_spline, wendland_c2, wendland_c4, wendland_c6 };
 
-inline constexpr std::array<kernel_type, 4> all_kernel_types = {
-  kernel_type::cubic_spline, kernel_type::wendland_c2, kernel_type::wendland_c4,
-  kernel_type::wendland_c6};
+inline constexpr std::array<kernel_type, 4> all_kernel_types = {kernel_type::cubic_spline, kernel_type::wendland_c2,
+                                                                kernel_type::wendland_c4, kernel_type::wendland_c6};
 
 /// The parameter-file names of the kernels (the shapes' own names), the one table of the "kernel"
 /// key's choices, its help and its errors.
@@ -34,12 +33,16 @@ kernel_type kernel_from_name(std::string_view name);
 template<int D, class Function>
 decltype(auto) dispatch_kernel(kernel_type type, Function&& function) {
   switch (type) {
-  case kernel_type::wendland_c2: return function(wendland_c2<D>{});
-  case kernel_type::wendland_c4: return function(wendland_c4<D>{});
-  case kernel_type::wendland_c6: return function(wendland_c6<D>{});
-  case kernel_type::cubic_spline: break;
+    case kernel_type::wendland_c2:
+      return function(wendland_c2<D>{});
+    case kernel_type::wendland_c4:
+      return function(wendland_c4<D>{});
+    case kernel_type::wendland_c6:
+      return function(wendland_c6<D>{});
+    case kernel_type::cubic_spline:
+      break;
   }
   return function(cubic_spline<D>{});
 }
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

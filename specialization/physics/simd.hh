@@ -67,7 +67,7 @@ inline double largest_lane(double x) { return x; }
 /// yes where `condition`, no elsewhere (lane by lane; both are computed).
 template<class A>
 FLECSPH_SIMD_INLINE stdx::simd<double, A> select(const typename stdx::simd<double, A>::mask_type& condition,
-                             const stdx::simd<double, A>& yes, const stdx::simd<double, A>& no) {
+                                                 const stdx::simd<double, A>& yes, const stdx::simd<double, A>& no) {
   stdx::simd<double, A> result = no;
   stdx::where(condition, result) = yes;
   return result;
@@ -97,15 +97,18 @@ FLECSPH_SIMD_INLINE double largest_lane(const stdx::simd<double, A>& x) {
 /// The pack whose lane i is f(i) (a gather through any index map).
 template<class T, class F>
 FLECSPH_SIMD_INLINE T generate(F&& f) {
-  if constexpr (std::is_same_v<T, double>) return f(std::size_t(0));
-  else return T([&](auto i) { return f(std::size_t(i)); });
+  if constexpr (std::is_same_v<T, double>)
+    return f(std::size_t(0));
+  else
+    return T([&](auto i) { return f(std::size_t(i)); });
 }
 
 /// The pack of lanes() consecutive doubles at p.
 template<class T>
 FLECSPH_SIMD_INLINE T load(const double* p) {
 #if FLECSPH_HAVE_STD_SIMD
-  if constexpr (!std::is_same_v<T, double>) return T(p, stdx::element_aligned);
+  if constexpr (!std::is_same_v<T, double>)
+    return T(p, stdx::element_aligned);
   else
 #endif
     return *p;
@@ -119,7 +122,7 @@ FLECSPH_SIMD_INLINE T load(const double* p) {
 /// turn. A masked term must be +0 or -0, which leaves a stripe unchanged (stripes start at +0).
 template<class T>
 class striped_sum {
-public:
+ public:
   static constexpr std::size_t stripes = 4;
 
   /// The next lanes<T> terms.
@@ -153,7 +156,7 @@ public:
     return (s[0] + s[1]) + (s[2] + s[3]);
   }
 
-private:
+ private:
   static_assert(stripes % lanes<T> == 0 || lanes<T> % stripes == 0, "packs of 1, 2, 4, 8, ... lanes");
   /// T itself up to 4 lanes, else a pack of exactly 4.
   using accumulator = std::conditional_t<(lanes<T> <= stripes), T, pack_at_most<stripes>>;
@@ -166,7 +169,8 @@ private:
 template<class T>
 FLECSPH_SIMD_INLINE void store(const T& x, double* p) {
 #if FLECSPH_HAVE_STD_SIMD
-  if constexpr (!std::is_same_v<T, double>) x.copy_to(p, stdx::element_aligned);
+  if constexpr (!std::is_same_v<T, double>)
+    x.copy_to(p, stdx::element_aligned);
   else
 #endif
     *p = x;
@@ -184,4 +188,4 @@ FLECSPH_SIMD_INLINE T square_root(const T& x) {
   return sqrt(x);
 }
 
-} // namespace flecsph::physics::simd
+}  // namespace flecsph::physics::simd

@@ -14,9 +14,12 @@ namespace flecsph::physics {
 template<int D>
 KOKKOS_INLINE_FUNCTION double dimension_root(double x) {
   static_assert(D >= 1 && D <= 3, "D = 1, 2, 3");
-  if constexpr (D == 1) return x;
-  else if constexpr (D == 2) return std::sqrt(x);
-  else return std::cbrt(x);
+  if constexpr (D == 1)
+    return x;
+  else if constexpr (D == 2)
+    return std::sqrt(x);
+  else
+    return std::cbrt(x);
 }
 
 /// h = eta (m / rho)^(1/D).
@@ -33,8 +36,7 @@ KOKKOS_INLINE_FUNCTION double density_from_smoothing_length(double m, double h, 
 
 /// Relative residual (rho_sum - rho_h) / rho_h of the h-rho relation; iterate until it is small.
 template<int D>
-KOKKOS_INLINE_FUNCTION double smoothing_length_residual(double h, double rho_sum, double m,
-                                                        double eta) {
+KOKKOS_INLINE_FUNCTION double smoothing_length_residual(double h, double rho_sum, double m, double eta) {
   const double rho_h = density_from_smoothing_length<D>(m, h, eta);
   return (rho_sum - rho_h) / rho_h;
 }
@@ -45,8 +47,7 @@ KOKKOS_INLINE_FUNCTION double smoothing_length_residual(double h, double rho_sum
 /// When f' <= 0 or the step leaves [h/2, 2h] (far from the root, where Newton is unreliable),
 /// falls back to the fixed-point update h = eta (m / rho_sum)^(1/D), also limited to [h/2, 2h].
 template<int D>
-KOKKOS_INLINE_FUNCTION double smoothing_length_newton_step(double h, double rho_sum,
-                                                           double drho_sum_dh, double m,
+KOKKOS_INLINE_FUNCTION double smoothing_length_newton_step(double h, double rho_sum, double drho_sum_dh, double m,
                                                            double eta) {
   const double rho_h = density_from_smoothing_length<D>(m, h, eta);
   const double f = rho_sum - rho_h;
@@ -67,4 +68,4 @@ KOKKOS_INLINE_FUNCTION double grad_h_omega(double h, double rho, double drho_sum
   return 1.0 + h / (D * rho) * drho_sum_dh;
 }
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

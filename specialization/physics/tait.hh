@@ -11,9 +11,9 @@ namespace flecsph::physics {
 /// Tait's stiffened liquid with exponent 7: c0 is chosen about 10 times the flow's largest speed,
 /// so that |rho / rho0 - 1| ~ (v / c0)^2 stays near 1%.
 struct tait {
-  double reference_density = 1000;   ///< rho0
-  double reference_sound_speed = 10; ///< c0
-  double background_pressure = 0;    ///< P_b (against tensile instability; 0 at a free surface)
+  double reference_density = 1000;    ///< rho0
+  double reference_sound_speed = 10;  ///< c0
+  double background_pressure = 0;     ///< P_b (against tensile instability; 0 at a free surface)
   static constexpr double exponent = 7;
 
   /// B = rho0 c0^2 / 7
@@ -36,4 +36,4 @@ struct tait {
   }
 };
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

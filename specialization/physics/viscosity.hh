@@ -44,8 +44,8 @@ KOKKOS_INLINE_FUNCTION T viscosity_mu(T h, T r_dot_v, T r_squared, double epsilo
 /// (mu = s / d), Pi = (-alpha c mu + beta mu^2) / rho = s (beta s - alpha c d) / (d^2 rho): one
 /// division per pair instead of two (the force loop is bound by its divisions).
 template<class T>
-KOKKOS_INLINE_FUNCTION T approaching_pair_viscosity(const viscosity_parameters& parameters, T r_dot_v,
-                                                    T r_squared, const basic_viscosity_particle<T>& a,
+KOKKOS_INLINE_FUNCTION T approaching_pair_viscosity(const viscosity_parameters& parameters, T r_dot_v, T r_squared,
+                                                    const basic_viscosity_particle<T>& a,
                                                     const basic_viscosity_particle<T>& b) {
   const T h = 0.5 * (a.h + b.h);
   const T c = 0.5 * (a.c + b.c);
@@ -56,9 +56,8 @@ KOKKOS_INLINE_FUNCTION T approaching_pair_viscosity(const viscosity_parameters& 
 }
 
 /// Pi_ab of (1.10); zero for receding pairs (r_ab.v_ab >= 0).
-KOKKOS_INLINE_FUNCTION double artificial_viscosity(const viscosity_parameters& parameters,
-                                                   double r_dot_v, double r_squared,
-                                                   const viscosity_particle& a,
+KOKKOS_INLINE_FUNCTION double artificial_viscosity(const viscosity_parameters& parameters, double r_dot_v,
+                                                   double r_squared, const viscosity_particle& a,
                                                    const viscosity_particle& b) {
   if (r_dot_v >= 0.0) return 0.0;
   return approaching_pair_viscosity(parameters, r_dot_v, r_squared, a, b);
@@ -66,8 +65,7 @@ KOKKOS_INLINE_FUNCTION double artificial_viscosity(const viscosity_parameters& p
 
 /// Balsara (1995) factor f = |div v| / (|div v| + |curl v| + 1e-4 c/h), which turns the
 /// viscosity off in shear flows; zero where the flow is not compressed or expanded.
-KOKKOS_INLINE_FUNCTION double balsara_switch(double div_v, double curl_v_magnitude, double c,
-                                             double h) {
+KOKKOS_INLINE_FUNCTION double balsara_switch(double div_v, double curl_v_magnitude, double c, double h) {
   const double compression = std::fabs(div_v);
   if (compression == 0.0) return 0.0;
   return compression / (compression + std::fabs(curl_v_magnitude) + 1.0e-4 * c / h);
@@ -88,14 +86,12 @@ KOKKOS_INLINE_FUNCTION T signal_velocity(T c_a, T c_b, T r_dot_v, T r, double be
 
 /// The same for r > 0 given 1/r (the force loop's pairs): no division.
 template<class T>
-KOKKOS_INLINE_FUNCTION T signal_velocity_from_inverse(T c_a, T c_b, T r_dot_v, T inverse_r,
-                                                      double beta_signal = 3.0) {
+KOKKOS_INLINE_FUNCTION T signal_velocity_from_inverse(T c_a, T c_b, T r_dot_v, T inverse_r, double beta_signal = 3.0) {
   return signal_velocity_of_approach(c_a, c_b, T(r_dot_v * inverse_r), beta_signal);
 }
 
 /// Courant time step of one particle, C h / max_b v_sig,ab.
-KOKKOS_INLINE_FUNCTION double courant_time_step(double courant, double h,
-                                                double max_signal_velocity) {
+KOKKOS_INLINE_FUNCTION double courant_time_step(double courant, double h, double max_signal_velocity) {
   return courant * h / max_signal_velocity;
 }
 
@@ -118,4 +114,4 @@ KOKKOS_INLINE_FUNCTION T artificial_conductivity(double alpha_u, T u_a, T u_b, T
   return alpha_u * v_signal * (u_a - u_b) / (0.5 * (rho_a + rho_b)) * dW_dr;
 }
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

@@ -7,8 +7,8 @@ flecsi_lite::app::definition frame_definition(const app_definition& app) {
   flecsi_lite::app::definition frame;
   frame.program = app.program;
   frame.summary = app.summary;
-  frame.declare_parameters = [declare_problem = app.declare_parameters,
-                              physics_defaults = app.physics_defaults, run_defaults = app.run_defaults](flecsi_lite::runtime::parameter_schema& schema) {
+  frame.declare_parameters = [declare_problem = app.declare_parameters, physics_defaults = app.physics_defaults,
+                              run_defaults = app.run_defaults](flecsi_lite::runtime::parameter_schema& schema) {
     if (declare_problem) declare_problem(schema);
     physics_parameters(physics_defaults).declare(schema);
     run_parameters(run_defaults).declare(schema);
@@ -25,4 +25,4 @@ int app_main(int argc, char** argv, const app_definition& app) {
   return flecsi_lite::app::main(argc, argv, frame_definition(app));
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

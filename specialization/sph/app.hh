@@ -83,8 +83,8 @@ struct app_state : simulation<D> {
 /// key (kernel, EOS, gamma, the problem's layout, ...) changes the solution.
 inline std::set<std::string> restart_free_keys() {
   auto keys = flecsi_lite::app::frame_free_keys();
-  for (const char* key : {"end_time", "max_steps", "progress_every", "diagnostics_every", "statistics_file",
-                          "statistics_every"})
+  for (const char* key :
+       {"end_time", "max_steps", "progress_every", "diagnostics_every", "statistics_file", "statistics_every"})
     keys.insert(key);
   return keys;
 }
@@ -132,9 +132,11 @@ void configure(app_state<D>& s, const flecsi_lite::app::run_context& run) {
                             {"initial_data", s.files.initial_data},
                             {"used_parameters_file", app::used_parameters_file(s.program, p)}});
   if (!writes_snapshots(s.output_keys) || s.files.output_file.empty()) return;
-  for (const auto& [key, path] : std::vector<std::pair<std::string, std::string>>{
-         {"checkpoint_file", s.files.checkpoint_file}, {"restart_file", s.files.restart_file},
-         {"initial_data", s.files.initial_data}, {"statistics_file", s.statistics_keys.file}})
+  for (const auto& [key, path] :
+       std::vector<std::pair<std::string, std::string>>{{"checkpoint_file", s.files.checkpoint_file},
+                                                        {"restart_file", s.files.restart_file},
+                                                        {"initial_data", s.files.initial_data},
+                                                        {"statistics_file", s.statistics_keys.file}})
     if (names_snapshot_file(path, s.files.output_file, s.program))
       throw flecsi_lite::runtime::parameter_error(
         key + " = '" + path + "' is a snapshot or the index of output_file = '" + s.files.output_file +
@@ -171,8 +173,8 @@ template<int D>
 void open_output(app_state<D>& s) {
   if (s.files.output_file.empty()) return;
   if (writes_snapshots(s.output_keys)) {
-    s.snapshots = std::make_unique<snapshot_series<D>>(
-      s.files.output_file, snapshot_run{s.program, s.parameters_text, s.output_keys.units});
+    s.snapshots = std::make_unique<snapshot_series<D>>(s.files.output_file,
+                                                       snapshot_run{s.program, s.parameters_text, s.output_keys.units});
     if (s.restarted) s.snapshots->continue_series(s.time, s.output_due);
     // A restart whose series has nothing before its step opens it with that step.
     if (s.restarted && s.snapshots->written() == 0) s.snapshots->write(s);
@@ -209,10 +211,12 @@ void read_initial_particles(app_state<D>& s) {
   const std::string& path = s.files.initial_data;
   if (flecsi_lite::io::gadget_reader::has_gadget_layout(path)) {
     if (s.files.initial_data_step != -1)
-      throw flecsi_lite::runtime::parameter_error(
-        "initial_data_step = " + std::to_string(s.files.initial_data_step) + " chooses a step of an H5Part file, "
-        "but initial_data = '" + path + "' holds SWIFT-format initial conditions (one set of particles): "
-        "remove initial_data_step");
+      throw flecsi_lite::runtime::parameter_error("initial_data_step = " + std::to_string(s.files.initial_data_step) +
+                                                  " chooses a step of an H5Part file, "
+                                                  "but initial_data = '" +
+                                                  path +
+                                                  "' holds SWIFT-format initial conditions (one set of particles): "
+                                                  "remove initial_data_step");
     const auto count = read_swift_initial_data<D>(s, path, s.output_keys.units);
     flecsi_lite::log::info() << s.program << ": " << count << " initial particles from '" << path
                              << "' (SWIFT-format initial conditions)";
@@ -236,8 +240,8 @@ void restart(app_state<D>& s) {
                                             s.parameters_text, restart_free_keys(), s.allowed_changes);
   s.next_output = io::attribute_as<double>(checkpoint_entry(state, "next_output", path), "run state 'next_output'");
   s.output_due = io::attribute_as<std::int64_t>(checkpoint_entry(state, "output_due", path), "run state 'output_due'");
-  flecsi_lite::log::info() << s.program << ": restarting at step " << s.step << ", t = " << s.time << " from '"
-                           << path << "'";
+  flecsi_lite::log::info() << s.program << ": restarting at step " << s.step << ", t = " << s.time << " from '" << path
+                           << "'";
 }
 
 inline std::uint64_t rank_value(std::uint64_t value) { return value; }
@@ -263,8 +267,10 @@ void describe_particles(app_state<D>& s) {
   line << s.program << ": " << p.global_size() << " particles (" << fluid << " fluid, " << p.global_size() - fluid
        << " walls), " << fewest << " to " << most << " per rank; kernel " << physics::kernel_name(s.physics.kernel)
        << ", eos ";
-  if (!s.equation_of_state.empty()) line << s.equation_of_state;
-  else line << physics::eos_name(s.physics.eos.type);
+  if (!s.equation_of_state.empty())
+    line << s.equation_of_state;
+  else
+    line << physics::eos_name(s.physics.eos.type);
   if (s.equation_of_state.empty() && s.physics.eos.type == physics::eos_type::ideal_gas)
     line << " (gamma " << s.physics.eos.ideal.gamma << ")";
 }
@@ -340,14 +346,18 @@ void checkpoint(app_state<D>& s) {
   if (!early && (every <= 0 || s.finished || s.step % every != 0)) return;
   const std::string& path = s.files.checkpoint_file;
   auto line = flecsi_lite::log::info();
-  if (early) line << s.program << ": stopped at step " << s.step << ", t = " << s.time << " < end_time = "
-                  << s.run.end_time << ": " << s.stop_reason << "; ";
+  if (early)
+    line << s.program << ": stopped at step " << s.step << ", t = " << s.time << " < end_time = " << s.run.end_time
+         << ": " << s.stop_reason << "; ";
   if (path.empty()) {
     line << "no checkpoint (checkpoint_file = none): this run cannot be resumed";
     return;
   }
-  write_restart_checkpoint(s, path, {{"program", s.program}, {"parameters", s.parameters_text},
-                                     {"next_output", s.next_output}, {"output_due", std::int64_t{s.output_due}}});
+  write_restart_checkpoint(s, path,
+                           {{"program", s.program},
+                            {"parameters", s.parameters_text},
+                            {"next_output", s.next_output},
+                            {"output_due", std::int64_t{s.output_due}}});
   line << "checkpoint of step " << s.step << " (t = " << s.time << ") in '" << path << "'";
   if (!early) return;
   line << "; resume with\n  " << s.resume_command << " --set restart_file=" << path;
@@ -355,7 +365,7 @@ void checkpoint(app_state<D>& s) {
   if (s.run.max_steps > 0 && s.step >= s.run.max_steps)
     line << " --set max_steps=0\n(max_steps counts steps from t = 0: 0 runs to end_time, a larger value stops there)";
 }
-} // namespace detail
+}  // namespace detail
 
 /// The standard SPH control model (driver.hh) with the self-gravity action (place_gravity, a
 /// no-op unless gravity = on), the app's problem, the initial data, the output and the
@@ -369,9 +379,12 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
   m.action("initial_data", "particles", [problem](State& s) {
     problem.set_domain(s);
     check_gravity_domain<D>(s.physics, s.tree_settings.periodic);
-    if (!s.files.restart_file.empty()) detail::restart<D>(s);
-    else if (!s.files.initial_data.empty()) detail::read_initial_particles<D>(s);
-    else problem.create_particles(s);
+    if (!s.files.restart_file.empty())
+      detail::restart<D>(s);
+    else if (!s.files.initial_data.empty())
+      detail::read_initial_particles<D>(s);
+    else
+      problem.create_particles(s);
   });
   m.action("initialize", "describe_particles", [](State& s) { detail::describe_particles<D>(s); }).after("search");
   m.action("initialize", "open_output", [](State& s) { detail::open_output<D>(static_cast<base&>(s)); });
@@ -399,11 +412,11 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
 /// keys, the defaults it chooses for the physics, run-control and file keys, its options and the run.
 struct app_definition {
   std::string program;
-  std::string summary;  ///< first line of --help
+  std::string summary;                                                              ///< first line of --help
   std::function<void(flecsi_lite::runtime::parameter_schema&)> declare_parameters;  ///< the problem's keys
   physics_settings physics_defaults;  ///< gamma, kernel, dissipation, ... of the problem
-  run_settings run_defaults;  ///< end_time, progress_every, diagnostics_every of the problem
-  io_settings file_defaults;  ///< output_file and checkpoint_file of the problem
+  run_settings run_defaults;          ///< end_time, progress_every, diagnostics_every of the problem
+  io_settings file_defaults;          ///< output_file and checkpoint_file of the problem
   std::function<void(flecsi_lite::runtime::options&)> declare_options;  ///< the app's checks
   std::function<int(const flecsi_lite::app::run_context&)> run;
 };
@@ -421,4 +434,4 @@ FLECSPH_SPH_APP_INSTANCES(extern, 1)
 FLECSPH_SPH_APP_INSTANCES(extern, 2)
 FLECSPH_SPH_APP_INSTANCES(extern, 3)
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

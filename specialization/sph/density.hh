@@ -150,7 +150,7 @@ double density_loop(const neighbourhood<D>& neighbours, const physics_settings& 
   });
   return std::max({worst, earlier, 0.0});  // no target: the reduction's identity is -inf
 }
-} // namespace detail
+}  // namespace detail
 
 /// Density (and, with adaptive h, the smoothing length and Omega) of the owned targets of one
 /// part (neighbourhood::targets): launched once with Ghost = na for the interior targets, which
@@ -178,4 +178,4 @@ double compute_density_with_gravity(neighbours_ro<D> neighbours, physics_setting
                                         zeta_over_omega.data());
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -26,13 +26,13 @@ conserved_totals<D> measure_conserved(simulation<D>& s) {
   auto& p = *s.particles;
   if (s.physics.gravity.enabled)
     return flecsi_lite::reduce<conserved_quantities_with_gravity<D>, conserved_reduction>(
-             f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p),
-             f::boundary_impulse(p), f::boundary_work(p), f::gravitational_potential(p))
+             f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p), f::boundary_impulse(p),
+             f::boundary_work(p), f::gravitational_potential(p))
       .get()
       .totals();
   return flecsi_lite::reduce<conserved_quantities<D>, conserved_reduction>(
-           f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p),
-           f::boundary_impulse(p), f::boundary_work(p))
+           f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p), f::boundary_impulse(p),
+           f::boundary_work(p))
     .get()
     .totals();
 }
@@ -43,7 +43,7 @@ std::string describe_conserved(const conserved_totals<D>& t, const conserved_tot
   out << std::setprecision(12) << "mass " << t.mass << "  momentum (";
   for (int k = 0; k < D; ++k) out << (k ? ", " : "") << t.momentum[k];
   out << ")";
-  if constexpr (angular_components<D> > 0) {
+  if constexpr (angular_components < D >> 0) {
     out << "  angular momentum (";
     for (int k = 0; k < angular_components<D>; ++k) out << (k ? ", " : "") << t.angular_momentum[k];
     out << ")";
@@ -100,9 +100,9 @@ void progress_line(simulation<D>& s) {
   line << "step " << std::setw(6) << s.step << "  t " << std::setw(10) << std::setprecision(6) << s.time << "  dt "
        << std::setw(10) << s.dt << "  " << std::fixed << std::setprecision(1) << std::setw(5) << 100 * fraction
        << "%  ETA " << std::setprecision(1)
-       << (s.time > s.started_time ? s.elapsed * (s.run.end_time - s.time) / (s.time - s.started_time) : 0.0)
-       << " s  " << std::scientific << std::setprecision(3) << rate << " particle-steps/s  "
-       << std::fixed << std::setprecision(1) << s.mean_neighbours << " neighbours";
+       << (s.time > s.started_time ? s.elapsed * (s.run.end_time - s.time) / (s.time - s.started_time) : 0.0) << " s  "
+       << std::scientific << std::setprecision(3) << rate << " particle-steps/s  " << std::fixed << std::setprecision(1)
+       << s.mean_neighbours << " neighbours";
   if (s.physics.individual_time_steps() && s.active_targets.valid())
     line << "  " << std::setprecision(0) << s.active_targets.get().targets << " active";
   flecsi_lite::log::info() << line.str();
@@ -133,19 +133,17 @@ template<int D>
 void run_summary(simulation<D>& s) {
   const memory_use bytes = measure_memory(s);
   flecsi_lite::log::info() << "sph: " << s.step << " steps to t = " << s.time << " in " << std::setprecision(4)
-                           << s.elapsed << " s: "
-                           << particle_steps_per_second(s)
-                           << " particle-steps/s, " << s.distributions << " distributions, "
-                           << s.repeated_searches << " repeated searches, " << s.searches
-                           << " neighbour searches; bytes per owned particle (rank 0): "
-                           << std::setprecision(3) << bytes.fields << " in fields, " << bytes.neighbour_lists
-                           << " in neighbour lists";
+                           << s.elapsed << " s: " << particle_steps_per_second(s) << " particle-steps/s, "
+                           << s.distributions << " distributions, " << s.repeated_searches << " repeated searches, "
+                           << s.searches
+                           << " neighbour searches; bytes per owned particle (rank 0): " << std::setprecision(3)
+                           << bytes.fields << " in fields, " << bytes.neighbour_lists << " in neighbour lists";
   if (s.physics.individual_time_steps()) {
     const double steps = static_cast<double>(std::max(1L, s.step - s.started_step));
     const double particles = static_cast<double>(std::max<std::uint64_t>(1, s.particles->global_size()));
     flecsi_lite::log::info() << "sph: individual time steps: " << std::setprecision(6) << s.particle_updates
-                             << " particle updates in " << s.step - s.started_step << " steps ("
-                             << std::setprecision(4) << s.particle_updates / steps << " per step, "
+                             << " particle updates in " << s.step - s.started_step << " steps (" << std::setprecision(4)
+                             << s.particle_updates / steps << " per step, "
                              << 100 * s.particle_updates / (steps * particles) << "% of the particles; "
                              << (s.elapsed > 0 ? s.particle_updates / s.elapsed : 0.0) << " updates/s), "
                              << std::setprecision(6) << s.woken << " woken by the limiter";
@@ -153,8 +151,8 @@ void run_summary(simulation<D>& s) {
   s.balance.settle();
   if (s.balance.distributions > 0)
     flecsi_lite::log::info() << "sph: balance (" << balance_names().name(s.physics.balance) << ", "
-                             << key_order_names().name(s.physics.key_order) << " keys) over "
-                             << s.balance.distributions << " distributions, max / mean per rank: work (neighbour "
+                             << key_order_names().name(s.physics.key_order) << " keys) over " << s.balance.distributions
+                             << " distributions, max / mean per rank: work (neighbour "
                              << "list entries) " << std::setprecision(4) << s.balance.work_mean() << " mean, "
                              << s.balance.work_max << " largest; particles " << s.balance.count_mean() << " mean, "
                              << s.balance.count_max << " largest";
@@ -167,4 +165,4 @@ void run_summary(simulation<D>& s) {
                            << " nodes and " << s.last_gravity.imported_particles << " particles imported";
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -48,11 +48,13 @@ struct fields {
   static const auto& smoothing_length() { return particle_tree<D>::smoothing_length; }
 
   // Output, restart and initial data.
-  static inline const definition<particle_kind> kind{"kind", persist::output().restart().initial_optional(
-    persist::one_of({0, 1}, "0 for fluid or 1 for wall particles"))};
+  static inline const definition<particle_kind> kind{
+    "kind",
+    persist::output().restart().initial_optional(persist::one_of({0, 1}, "0 for fluid or 1 for wall particles"))};
   /// v (predicted during a step)
-  static inline const definition<vector<D>> velocity{"velocity", persist::as("vx", "vy", "vz").padded().output().restart()
-    .initial_optional(persist::must_be_finite("velocities"))};
+  static inline const definition<vector<D>> velocity{
+    "velocity",
+    persist::as("vx", "vy", "vz").padded().output().restart().initial_optional(persist::must_be_finite("velocities"))};
   /// eq. (1.3); read as an initial guess only
   static inline const definition<double> density{
     "rho", persist::output().restart().initial_optional(persist::at_least(0, "densities"))};
@@ -84,8 +86,8 @@ struct fields {
   static inline const definition<vector<D>> gravity_acceleration{"gravity_acceleration"};
   // The half-step values of the leapfrog: recomputed in every step with global time steps; with
   // individual ones a particle keeps them over its step (restart only, time_steps = individual).
-  static inline const definition<vector<D>> velocity_half{
-    "velocity_half", persist::as("vx_half", "vy_half", "vz_half").restart()};
+  static inline const definition<vector<D>> velocity_half{"velocity_half",
+                                                          persist::as("vx_half", "vy_half", "vz_half").restart()};
   static inline const definition<double> internal_energy_half{"u_half", persist::restart()};
   // Individual time steps only (time_bins.hh; in the files with time_steps = individual): the
   // particle's bin (its step is 2^bin ticks of the timeline), where its step began and ends
@@ -110,4 +112,4 @@ struct fields {
   static inline const definition<double> work{"work"};
 };
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -42,7 +42,8 @@ struct force_fields {
 inline void inverse_smoothing_lengths(const double* h, std::size_t n, std::vector<double>& out) {
   out.resize(n);
   double* inverse = out.data();
-  flecsi_lite::forall(n, [=](std::size_t i) { inverse[i] = 1.0 / h[i]; }, "sph::compute_forces::inverse_h");
+  flecsi_lite::forall(
+    n, [=](std::size_t i) { inverse[i] = 1.0 / h[i]; }, "sph::compute_forces::inverse_h");
 }
 
 /// The buffer of inverse_smoothing_lengths, one per launching thread, shared by the interior and
@@ -65,8 +66,8 @@ inline std::vector<double>& inverse_h_buffer() {
 /// viscosity's): 1/h comes per particle, and 1/q = h/r.
 template<class Kernel, bool Conductivity, bool GradHGravity, int D, class T = physics::simd::pack>
 void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields<D>& in,
-                const physics::viscosity_parameters& viscosity, double conductivity, vector<D>& dv_dt,
-                double& du, double& signal) {
+                const physics::viscosity_parameters& viscosity, double conductivity, vector<D>& dv_dt, double& du,
+                double& signal) {
   namespace simd = physics::simd;
   constexpr std::size_t W = simd::lanes<T>;
   const double support2 = physics::kernel_support * physics::kernel_support;
@@ -83,7 +84,9 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
     std::size_t b[W];
     T r[D], r_dot_v = 0.0;
     const T r2 = walk.separations(j0, end, x_a, in.x, b, r);
-    const auto gather = [&](const double* field) { return simd::generate<T>([&](std::size_t i) { return field[b[i]]; }); };
+    const auto gather = [&](const double* field) {
+      return simd::generate<T>([&](std::size_t i) { return field[b[i]]; });
+    };
     const T h_b = gather(in.h), h_max = simd::maximum(T(h_a), h_b);
     const auto pair = (lane < double(end - j0)) && !(r2 >= support2 * h_max * h_max) && (r2 != 0.0);
     const T zero = 0.0;
@@ -102,13 +105,13 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
     }
     const T c_b = gather(in.cs), rho_b = gather(in.rho);
     // Viscosity acts on approaching pairs only (Pi_ab = 0 otherwise).
-    const T Pi = simd::select(r_dot_v < 0.0,
-                              physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
-                                                                     {rho_b, c_b, h_b, in.balsara ? gather(in.balsara) : T(1.0)}),
-                              zero);
+    const T Pi =
+      simd::select(r_dot_v < 0.0,
+                   physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
+                                                          {rho_b, c_b, h_b, in.balsara ? gather(in.balsara) : T(1.0)}),
+                   zero);
     T bracket = (term_a * F_a + gather(in.pressure_term) * F_b) + Pi * F_ab;
-    if constexpr (GradHGravity)
-      bracket += in.half_G * (in.zeta_over_omega[a] * F_a + gather(in.zeta_over_omega) * F_b);
+    if constexpr (GradHGravity) bracket += in.half_G * (in.zeta_over_omega[a] * F_a + gather(in.zeta_over_omega) * F_b);
     const T m_b = gather(in.m);
     for (int k = 0; k < D; ++k) sum_v[k].subtract(simd::select(pair, m_b * bracket * r[k], zero));
     T work = m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v;
@@ -123,7 +126,7 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
   du = sum_u.total();
   signal = simd::largest_lane(largest);
 }
-} // namespace detail
+}  // namespace detail
 
 namespace detail {
 /// The loop of compute_forces over one part's targets, whose lists name the first `particles`
@@ -169,15 +172,19 @@ double force_loop(const neighbourhood<D>& neighbours, const physics_settings& se
   };
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel_type) {
     const auto with_gravity_term = [&](auto with_conductivity) {
-      if (in.zeta_over_omega) loop(kernel_type, with_conductivity, std::true_type{});
-      else loop(kernel_type, with_conductivity, std::false_type{});
+      if (in.zeta_over_omega)
+        loop(kernel_type, with_conductivity, std::true_type{});
+      else
+        loop(kernel_type, with_conductivity, std::false_type{});
     };
-    if (settings.conductivity > 0) with_gravity_term(std::true_type{});
-    else with_gravity_term(std::false_type{});
+    if (settings.conductivity > 0)
+      with_gravity_term(std::true_type{});
+    else
+      with_gravity_term(std::false_type{});
   });
   return std::min(smallest, earlier);
 }
-} // namespace detail
+}  // namespace detail
 
 /// Accelerations and du/dt of the owned targets of one part (neighbourhood::targets): launched
 /// with Ghost = na for the interior targets, which needs no ghost value, and with Ghost = ro for
@@ -196,14 +203,16 @@ double force_loop(const neighbourhood<D>& neighbours, const physics_settings& se
 template<int D, flecsi_lite::privilege Ghost>
 double compute_forces(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
                       ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
-                      ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> h,
-                      ro_neighbours<double, Ghost> rho, ro_neighbours<double, Ghost> P,
-                      ro_neighbours<double, Ghost> cs, ro_neighbours<double, Ghost> pressure_term,
-                      ro_neighbours<double, Ghost> u, ro_neighbours<double, Ghost> balsara, ro<particle_kind> kind,
-                      wo<vector<D>> acceleration, wo<double> du_dt, wo<double> own_time_step) {
-  const detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
-                                   P.data(),   cs.data(), pressure_term.data(), u.data(),
-                                   settings.balsara ? balsara.data() : nullptr};
+                      ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> h, ro_neighbours<double, Ghost> rho,
+                      ro_neighbours<double, Ghost> P, ro_neighbours<double, Ghost> cs,
+                      ro_neighbours<double, Ghost> pressure_term, ro_neighbours<double, Ghost> u,
+                      ro_neighbours<double, Ghost> balsara, ro<particle_kind> kind, wo<vector<D>> acceleration,
+                      wo<double> du_dt, wo<double> own_time_step) {
+  const detail::force_fields<D> in{x.data(),   v.data(),
+                                   m.data(),   h.data(),
+                                   rho.data(), P.data(),
+                                   cs.data(),  pressure_term.data(),
+                                   u.data(),   settings.balsara ? balsara.data() : nullptr};
   return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt,
                                       own_time_step);
 }
@@ -223,9 +232,11 @@ double compute_forces_with_gravity(neighbours_ro<D> neighbours, physics_settings
                                    ro_neighbours<double, Ghost> zeta_over_omega, ro<vector<D>> gravity_acceleration,
                                    ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt,
                                    wo<double> own_time_step) {
-  detail::force_fields<D> in{x.data(),   v.data(),  m.data(),  h.data(),          rho.data(),
-                             P.data(),   cs.data(), pressure_term.data(), u.data(),
-                             settings.balsara ? balsara.data() : nullptr};
+  detail::force_fields<D> in{x.data(),   v.data(),
+                             m.data(),   h.data(),
+                             rho.data(), P.data(),
+                             cs.data(),  pressure_term.data(),
+                             u.data(),   settings.balsara ? balsara.data() : nullptr};
   if (settings.gravity.grad_h) in.zeta_over_omega = zeta_over_omega.data();
   in.gravity_acceleration = gravity_acceleration.data();
   in.half_G = 0.5 * settings.gravity.constant;
@@ -233,4 +244,4 @@ double compute_forces_with_gravity(neighbours_ro<D> neighbours, physics_settings
                                       own_time_step);
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

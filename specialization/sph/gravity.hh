@@ -48,12 +48,15 @@ namespace detail {
 template<int D>
 void store_gravity(double G, const std::vector<vector<D>>& acceleration, const std::vector<double>& potential,
                    wo<vector<D>> gravity_acceleration, wo<double> gravitational_potential) {
-  flecsi_lite::forall(gravity_acceleration.size(), [&](std::size_t a) {
-    for (int k = 0; k < D; ++k) gravity_acceleration(a)[k] = G * acceleration[a][k];
-    gravitational_potential(a) = G * potential[a];
-  }, "sph::store_gravity");
+  flecsi_lite::forall(
+    gravity_acceleration.size(),
+    [&](std::size_t a) {
+      for (int k = 0; k < D; ++k) gravity_acceleration(a)[k] = G * acceleration[a][k];
+      gravitational_potential(a) = G * potential[a];
+    },
+    "sph::store_gravity");
 }
-} // namespace detail
+}  // namespace detail
 
 /// Collective: the tree gravity of the owned particles at their current positions, h (final:
 /// call after the density) and masses, into the fields gravity_acceleration (G a) and phi (G Phi).
@@ -117,10 +120,12 @@ gravity_record update_gravity(simulation<D>& s) {
 /// action returns at once.
 template<class State>
 void place_gravity(flecsi_lite::control::control_model<State>& m) {
-  m.action("initialize", "gravity", [](State& s) {
-     if (!s.restarted) s.last_gravity = update_gravity(s);
-   }).after("density");
+  m.action("initialize", "gravity",
+           [](State& s) {
+             if (!s.restarted) s.last_gravity = update_gravity(s);
+           })
+    .after("density");
   m.action("advance", "gravity", [](State& s) { s.last_gravity = update_gravity(s); }).after("density");
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

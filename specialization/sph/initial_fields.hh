@@ -117,7 +117,7 @@ void set_initial_fields(const initial_fill<D>& fill, initial_accessor<vector<D>>
     u(i) = p.u;
   }
 }
-} // namespace detail
+}  // namespace detail
 
 /// Sets the initial fields of this rank's particles (after create_particles) in one task with
 /// write privileges on them, so that the executor knows they changed; returns when it has run
@@ -130,9 +130,9 @@ void initial_fields(simulation<D>& s, Fill&& fill) {
   auto& p = *s.particles;
   const initial_fill<D> function(std::forward<Fill>(fill));
   flecsi_lite::execute<detail::set_initial_fields<D>>(function, f::position()(p), f::velocity(p), f::id()(p),
-                                                      f::mass()(p), f::smoothing_length()(p), f::kind(p),
-                                                      f::density(p), f::internal_energy(p))
+                                                      f::mass()(p), f::smoothing_length()(p), f::kind(p), f::density(p),
+                                                      f::internal_energy(p))
     .wait();
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

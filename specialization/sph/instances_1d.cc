@@ -4,4 +4,4 @@
 namespace flecsph::sph {
 FLECSPH_SPH_STEP_INSTANCES(, 1)
 FLECSPH_SPH_APP_INSTANCES(, 1)
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -4,4 +4,4 @@
 namespace flecsph::sph {
 FLECSPH_SPH_STEP_INSTANCES(, 2)
 FLECSPH_SPH_APP_INSTANCES(, 2)
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

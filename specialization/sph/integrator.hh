@@ -27,8 +27,10 @@ void wrap_periodic(const tree::domain<D>& space, vector<D>& x) {
   for (int k = 0; k < D; ++k) {
     if (!space.periodic[k]) continue;
     const double period = space.period(k);
-    if (x[k] < space.bounds.lo[k]) x[k] += period;
-    else if (x[k] >= space.bounds.hi[k]) x[k] -= period;
+    if (x[k] < space.bounds.lo[k])
+      x[k] += period;
+    else if (x[k] >= space.bounds.hi[k])
+      x[k] -= period;
   }
 }
 
@@ -53,46 +55,49 @@ void drift_by(double dt, const vector<D>& velocity, const tree::domain<D>& space
 }
 
 template<int D>
-void kick_drift(double dt, tree::domain<D> space, ro<particle_kind> kind,
-                rw<vector<D>> x, rw<vector<D>> v, wo<vector<D>> v_half,
-                rw<double> u, wo<double> u_half, ro<vector<D>> acceleration,
-                ro<double> du_dt, rw<vector<D>> impulse, rw<double> work,
-                rw<double> drift) {
+void kick_drift(double dt, tree::domain<D> space, ro<particle_kind> kind, rw<vector<D>> x, rw<vector<D>> v,
+                wo<vector<D>> v_half, rw<double> u, wo<double> u_half, ro<vector<D>> acceleration, ro<double> du_dt,
+                rw<vector<D>> impulse, rw<double> work, rw<double> drift) {
   const double half = 0.5 * dt;
-  flecsi_lite::forall(x.size(), [&](std::size_t a) {
-    const vector<D>& acc = acceleration(a);
-    if (kind(a) != particle_kind::fluid) {
-      accumulate_on_wall<D>(half, acc, du_dt(a), impulse(a), work(a));
-      v_half(a) = v(a);
-      u_half(a) = u(a);
-      return;
-    }
-    vector<D> velocity;
-    for (int k = 0; k < D; ++k) velocity[k] = v(a)[k] + half * acc[k];
-    drift_by<D>(dt, velocity, space, x(a), drift(a));
-    v_half(a) = velocity;
-    for (int k = 0; k < D; ++k) v(a)[k] = velocity[k] + half * acc[k];
-    u_half(a) = u(a) + half * du_dt(a);
-    u(a) = u_half(a) + half * du_dt(a);
-  }, "sph::kick_drift");
+  flecsi_lite::forall(
+    x.size(),
+    [&](std::size_t a) {
+      const vector<D>& acc = acceleration(a);
+      if (kind(a) != particle_kind::fluid) {
+        accumulate_on_wall<D>(half, acc, du_dt(a), impulse(a), work(a));
+        v_half(a) = v(a);
+        u_half(a) = u(a);
+        return;
+      }
+      vector<D> velocity;
+      for (int k = 0; k < D; ++k) velocity[k] = v(a)[k] + half * acc[k];
+      drift_by<D>(dt, velocity, space, x(a), drift(a));
+      v_half(a) = velocity;
+      for (int k = 0; k < D; ++k) v(a)[k] = velocity[k] + half * acc[k];
+      u_half(a) = u(a) + half * du_dt(a);
+      u(a) = u_half(a) + half * du_dt(a);
+    },
+    "sph::kick_drift");
 }
 
 template<int D>
-void kick(double dt, ro<particle_kind> kind, ro<vector<D>> v_half, ro<double> u_half,
-          ro<vector<D>> acceleration, ro<double> du_dt, wo<vector<D>> v,
-          wo<double> u, rw<vector<D>> impulse, rw<double> work) {
+void kick(double dt, ro<particle_kind> kind, ro<vector<D>> v_half, ro<double> u_half, ro<vector<D>> acceleration,
+          ro<double> du_dt, wo<vector<D>> v, wo<double> u, rw<vector<D>> impulse, rw<double> work) {
   const double half = 0.5 * dt;
-  flecsi_lite::forall(v.size(), [&](std::size_t a) {
-    const vector<D>& acc = acceleration(a);
-    if (kind(a) != particle_kind::fluid) {
-      accumulate_on_wall<D>(half, acc, du_dt(a), impulse(a), work(a));
-      v(a) = v_half(a);
-      u(a) = u_half(a);
-      return;
-    }
-    for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + half * acc[k];
-    u(a) = u_half(a) + half * du_dt(a);
-  }, "sph::kick");
+  flecsi_lite::forall(
+    v.size(),
+    [&](std::size_t a) {
+      const vector<D>& acc = acceleration(a);
+      if (kind(a) != particle_kind::fluid) {
+        accumulate_on_wall<D>(half, acc, du_dt(a), impulse(a), work(a));
+        v(a) = v_half(a);
+        u(a) = u_half(a);
+        return;
+      }
+      for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + half * acc[k];
+      u(a) = u_half(a) + half * du_dt(a);
+    },
+    "sph::kick");
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -23,9 +23,11 @@ struct kernel_at {
   explicit kernel_at(T h_) : kernel_at(h_, T(1.0 / h_)) {}
   /// From h and 1/h (the force loop's neighbours: 1/h once per particle, not once per pair).
   kernel_at(T h_, T inverse_h_)
-    : h(h_), inverse_h(inverse_h_), value_norm(Kernel::sigma * physics::integer_power<D>(inverse_h)),
-      h_norm(Kernel::sigma * physics::integer_power<D + 1>(inverse_h)),
-      gradient_norm(Kernel::sigma * physics::integer_power<D + 2>(inverse_h)) {}
+      : h(h_),
+        inverse_h(inverse_h_),
+        value_norm(Kernel::sigma * physics::integer_power<D>(inverse_h)),
+        h_norm(Kernel::sigma * physics::integer_power<D + 1>(inverse_h)),
+        gradient_norm(Kernel::sigma * physics::integer_power<D + 2>(inverse_h)) {}
 
   /// (1/r) dW/dr: grad_a W_ab = r_ab * gradient_factor(|r_ab|); equals Kernel::gradient_factor(r, h).
   template<class R>
@@ -49,4 +51,4 @@ struct kernel_at {
   }
 };
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

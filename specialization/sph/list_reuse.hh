@@ -75,4 +75,4 @@ neighbour_slack measure_neighbour_slack(neighbours_ro<D> neighbours_object, tree
   return slack;
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

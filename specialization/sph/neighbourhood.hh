@@ -6,8 +6,8 @@
 // and the check that no two particles coincide.
 #pragma once
 
-#include "specialization/sph/fields.hh"
 #include "specialization/physics/simd.hh"
+#include "specialization/sph/fields.hh"
 #include "specialization/sph/tasks.hh"
 
 #include "flecsi_lite/execution.hh"
@@ -37,8 +37,8 @@ template<int D>
 struct neighbourhood {
   tree::neighbour_lists lists;  ///< offsets per owned particle, packed entries (b, shift code)
   std::array<vector<D>, tree::shift_code_count<D>> shift_table{};  ///< displacement per shift code
-  double reach = 2.0;       ///< the reach the lists hold, in units of h (>= the kernel support 2)
-  double list_reach = 2.0;  ///< the reach they were searched with (>= reach)
+  double reach = 2.0;               ///< the reach the lists hold, in units of h (>= the kernel support 2)
+  double list_reach = 2.0;          ///< the reach they were searched with (>= reach)
   std::vector<vector<D>> listed_x;  ///< position of each owned particle at the search (with a skin)
   std::vector<double> listed_h;     ///< its h then (with a skin)
   /// The owned targets whose lists hold owned particles only (a periodic image of an owned
@@ -93,7 +93,7 @@ struct neighbour_walk {
   const vector<D>* shift_table;
 
   explicit neighbour_walk(const neighbourhood<D>& n)
-    : offsets(n.lists.offsets.data()), entries(n.lists.neighbours.data()), shift_table(n.shift_table.data()) {}
+      : offsets(n.lists.offsets.data()), entries(n.lists.neighbours.data()), shift_table(n.shift_table.data()) {}
 
   std::size_t begin(std::size_t a) const { return offsets[a]; }
   std::size_t end(std::size_t a) const { return offsets[a + 1]; }
@@ -161,11 +161,14 @@ void split_targets(neighbourhood<D>& n, std::size_t particles) {
   const std::size_t owned = n.size();
   std::vector<std::uint8_t> needs_ghosts(particles > owned ? owned : 0);
   const neighbour_walk<D> walk(n);
-  flecsi_lite::forall(needs_ghosts.size(), [&](std::size_t a) {
-    bool ghost = false;
-    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end && !ghost; ++j) ghost = walk.neighbour(j) >= owned;
-    needs_ghosts[a] = ghost;
-  }, "sph::split_targets");
+  flecsi_lite::forall(
+    needs_ghosts.size(),
+    [&](std::size_t a) {
+      bool ghost = false;
+      for (std::size_t j = walk.begin(a), end = walk.end(a); j < end && !ghost; ++j) ghost = walk.neighbour(j) >= owned;
+      needs_ghosts[a] = ghost;
+    },
+    "sph::split_targets");
   n.interior.clear();
   n.boundary.clear();
   n.active_selected = false;
@@ -207,12 +210,15 @@ void finish_search(const tree::local_tree<D>& local, neighbourhood<D>& out, doub
   const std::size_t* sorted = local.storage_to_sorted().data();
   const auto* x = local.positions().data();
   const double* h = local.smoothing_lengths().data();
-  flecsi_lite::forall(owned, [&](std::size_t a) {
-    out.listed_x[a] = x[sorted[a]];
-    out.listed_h[a] = h[sorted[a]];
-  }, "sph::search_neighbours::listed");
+  flecsi_lite::forall(
+    owned,
+    [&](std::size_t a) {
+      out.listed_x[a] = x[sorted[a]];
+      out.listed_h[a] = h[sorted[a]];
+    },
+    "sph::search_neighbours::listed");
 }
-} // namespace detail
+}  // namespace detail
 
 /// The search task: fills `out` from the local tree's search over owned targets (symmetric
 /// criterion, reach `support` (1 + list_skin)), with the positions and h it searched with (the
@@ -236,8 +242,8 @@ void search_active_neighbours(
   typename tracked_neighbourhood<D>::template accessor<flecsi_lite::wo> out, double support, tree::domain<D> space,
   std::int64_t next, ro<std::int64_t> step_end) {
   std::vector<std::uint8_t> active(step_end.size());
-  flecsi_lite::forall(active.size(), [&](std::size_t a) { active[a] = step_end(a) == next; },
-                      "sph::search_active_neighbours::mask");
+  flecsi_lite::forall(
+    active.size(), [&](std::size_t a) { active[a] = step_end(a) == next; }, "sph::search_active_neighbours::mask");
   local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, {},
                             tree::shift_storage::packed);
   detail::finish_search(*local, *out, support, support, space);
@@ -247,8 +253,7 @@ void search_active_neighbours(
 /// refresh_local_tree(), which the executor orders before it), `list_skin` beyond the reach.
 template<int D>
 void find_neighbours(particle_tree<D>& p, tracked_neighbourhood<D>& out, double list_skin) {
-  flecsi_lite::execute<search_neighbours<D>>(p.local_tree_object(), out, p.settings().support, list_skin,
-                                             p.space());
+  flecsi_lite::execute<search_neighbours<D>>(p.local_tree_object(), out, p.settings().support, list_skin, p.space());
 }
 
 /// Two distinct particles at the same position, the pair with the smallest ids (first < second);
@@ -289,4 +294,4 @@ coincident_pair find_coincident(neighbours_ro<D> neighbours_object, ro_with_ghos
   return best;
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -57,15 +57,15 @@ template<int D>
 void check_particle_set(simulation<D>& s, const std::string& what) {
   using f = fields<D>;
   auto& p = *s.particles;
-  const std::uint64_t fluid =
-    flecsi_lite::reduce<count_fluid, flecsi_lite::reduction::sum>(f::kind(p)).get();
+  const std::uint64_t fluid = flecsi_lite::reduce<count_fluid, flecsi_lite::reduction::sum>(f::kind(p)).get();
   if (fluid == 0)
     throw std::invalid_argument(what + " holds no fluid particles (all " + std::to_string(p.global_size()) +
                                 " have kind 1, wall): nothing would move");
   if (p.global_size() == 1 && s.physics.adaptive_smoothing_length)
     throw std::invalid_argument(
-      what + " holds a single particle: with adaptive_smoothing_length = true its h = eta (m/rho)^(1/D) has no "
-             "solution without neighbours; set adaptive_smoothing_length = false to run it with its h");
+      what +
+      " holds a single particle: with adaptive_smoothing_length = true its h = eta (m/rho)^(1/D) has no "
+      "solution without neighbours; set adaptive_smoothing_length = false to run it with its h");
   p.distribute();
   tracked_neighbourhood<D> neighbours{"coincidence check lists"};
   find_neighbours(p, neighbours, 0.0);
@@ -79,7 +79,7 @@ void check_particle_set(simulation<D>& s, const std::string& what) {
   message << "): SPH needs distinct positions (move or remove one of them)";
   throw std::invalid_argument(message.str());
 }
-} // namespace detail
+}  // namespace detail
 
 /// Collective: creates the particles of `s` from step `step` (the index k of Step#k; -1: the last)
 /// of `in`, with this rank's block of them and their initial fields. The tree settings (box,
@@ -93,4 +93,4 @@ std::int64_t read_particles(simulation<D>& s, const flecsi_lite::io::h5part_read
   return step;
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

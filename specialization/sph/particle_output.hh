@@ -21,10 +21,12 @@ std::vector<flecsi_lite::data::registered_field> files_fields(const simulation<D
   using f = fields<D>;
   const bool gravity = s.physics.gravity.enabled, individual = s.physics.individual_time_steps();
   for (auto& field : all) {
-    const bool gravity_field = field.name == f::gravitational_potential.name() || field.name == f::zeta_over_omega.name();
-    const bool individual_field = field.name == f::velocity_half.name() || field.name == f::internal_energy_half.name() ||
-                                  field.name == f::time_bin.name() || field.name == f::step_begin.name() ||
-                                  field.name == f::step_end.name() || field.name == f::kicked_ticks.name();
+    const bool gravity_field =
+      field.name == f::gravitational_potential.name() || field.name == f::zeta_over_omega.name();
+    const bool individual_field = field.name == f::velocity_half.name() ||
+                                  field.name == f::internal_energy_half.name() || field.name == f::time_bin.name() ||
+                                  field.name == f::step_begin.name() || field.name == f::step_end.name() ||
+                                  field.name == f::kicked_ticks.name();
     if ((gravity_field && !gravity) || (individual_field && !individual))
       field.persistence = flecsi_lite::data::persistence();
   }
@@ -48,4 +50,4 @@ void write_particles(flecsi_lite::io::h5part_writer& out, simulation<D>& s) {
   out.end_step();
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

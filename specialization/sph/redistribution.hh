@@ -34,8 +34,7 @@ inline bool ghosts_still_suffice(const distribution_slack& slack, double support
   return 2 * slack.drift + support * slack.growth <= support * (1 + skin);
 }
 
-inline distribution_slack measure_distribution_slack(ro<double> h, ro<double> drift,
-                                                     ro<double> distributed_h) {
+inline distribution_slack measure_distribution_slack(ro<double> h, ro<double> drift, ro<double> distributed_h) {
   distribution_slack slack;
   for (std::size_t a = 0; a < h.size(); ++a) {
     slack.drift = std::max(slack.drift, drift(a) / distributed_h(a));
@@ -49,9 +48,9 @@ inline distribution_slack measure_distribution_slack(ro<double> h, ro<double> dr
 template<int D>
 void measure_work(neighbours_ro<D> neighbours, wo<double> work) {
   const auto& lists = neighbours->lists;
-  flecsi_lite::forall(work.size(), [&](std::size_t a) {
-    work(a) = a < lists.size() ? static_cast<double>(lists.count(a)) : 0.0;
-  }, "sph::measure_work");
+  flecsi_lite::forall(
+    work.size(), [&](std::size_t a) { work(a) = a < lists.size() ? static_cast<double>(lists.count(a)) : 0.0; },
+    "sph::measure_work");
 }
 
 /// After a distribution: the path lengths start again from zero, from the current h and position
@@ -59,11 +58,14 @@ void measure_work(neighbours_ro<D> neighbours, wo<double> work) {
 template<int D>
 void mark_distributed(ro<double> h, ro<vector<D>> x, wo<double> drift, wo<double> distributed_h,
                       wo<vector<D>> distributed_x) {
-  flecsi_lite::forall(h.size(), [&](std::size_t a) {
-    drift(a) = 0;
-    distributed_h(a) = h(a);
-    distributed_x(a) = x(a);
-  }, "sph::mark_distributed");
+  flecsi_lite::forall(
+    h.size(),
+    [&](std::size_t a) {
+      drift(a) = 0;
+      distributed_h(a) = h(a);
+      distributed_x(a) = x(a);
+    },
+    "sph::mark_distributed");
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

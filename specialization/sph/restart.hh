@@ -124,10 +124,13 @@ void load_timeline(simulation<D>& s, const flecsi_lite::io::run_state& state, co
 /// Exchanges the current positions and h with those of the last distribution (twice: back).
 template<int D>
 void swap_distribution_state(rw<vector<D>> x, rw<double> h, rw<vector<D>> distributed_x, rw<double> distributed_h) {
-  flecsi_lite::forall(x.size(), [&](std::size_t a) {
-    std::swap(x(a), distributed_x(a));
-    std::swap(h(a), distributed_h(a));
-  }, "sph::swap_distribution_state");
+  flecsi_lite::forall(
+    x.size(),
+    [&](std::size_t a) {
+      std::swap(x(a), distributed_x(a));
+      std::swap(h(a), distributed_h(a));
+    },
+    "sph::swap_distribution_state");
 }
 
 /// Collective: distributes the particles as the writing run last did (keys and ghosts from the
@@ -186,7 +189,7 @@ inline void check_ids(const flecsi_lite::io::h5part_reader& in) {
   if (const auto twice = io::duplicate_id(ids.data(), ids.size(), in.communicator()))
     throw io::layout_error(where + ": id " + std::to_string(*twice) + " belongs to more than one particle");
 }
-} // namespace detail
+}  // namespace detail
 
 /// Collective: writes the checkpoint `path` of `s` now, with `state` (the app's entries) and the
 /// dimension and initial totals. The run goes on as it would without it.
@@ -235,4 +238,4 @@ flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::
   return contents.state;
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -61,8 +61,7 @@ physics_block declare_physics(const physics_settings& defaults) {
   p.real("acceleration_factor", &physics_settings::acceleration_factor, "dt <= factor sqrt(h/|a|)")
     .greater_than(0)
     .at_most(10);
-  p.real("search_margin", &physics_settings::search_margin, "neighbour search reach 2 (1 + margin) h")
-    .range(0, 10);
+  p.real("search_margin", &physics_settings::search_margin, "neighbour search reach 2 (1 + margin) h").range(0, 10);
   p.real("distribution_skin", &physics_settings::distribution_skin,
          "ghosts reach (1 + skin) times the search: distribute when used up")
     .range(0, 10);
@@ -91,8 +90,8 @@ physics_block declare_physics(const physics_settings& defaults) {
     .at_most(1);
   p.boolean("gravity_grad_h", member(&physics_settings::gravity, &gravity_settings::grad_h),
             "grad-h gravity term of Price & Monaghan (2007) (off only to measure its effect)");
-  p.choice("time_steps", member(&physics_settings::time_steps, &time_step_settings::stepping),
-           time_stepping_names(), "one step for all particles, or each particle its own (block time steps)");
+  p.choice("time_steps", member(&physics_settings::time_steps, &time_step_settings::stepping), time_stepping_names(),
+           "one step for all particles, or each particle its own (block time steps)");
   p.integer("time_step_limiter", member(&physics_settings::time_steps, &time_step_settings::limiter),
             "individual steps: largest ratio of a particle's step to its neighbours' (power of two; 0: off)")
     .range(0, 1 << 20);
@@ -112,7 +111,7 @@ physics_block declare_physics(const physics_settings& defaults) {
   });
   return p;
 }
-} // namespace
+}  // namespace
 
 const flecsi_lite::runtime::name_table<time_stepping>& time_stepping_names() {
   static const flecsi_lite::runtime::name_table<time_stepping> table{
@@ -128,15 +127,15 @@ const flecsi_lite::runtime::name_table<gravity_criterion>& gravity_criterion_nam
 
 const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::curve>& key_order_names() {
   using flecsi_lite::topology::ntree::curve;
-  static const flecsi_lite::runtime::name_table<curve> table{
-    "key order", {{"hilbert", curve::hilbert}, {"morton", curve::morton}}};
+  static const flecsi_lite::runtime::name_table<curve> table{"key order",
+                                                             {{"hilbert", curve::hilbert}, {"morton", curve::morton}}};
   return table;
 }
 
 const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::balance>& balance_names() {
   using flecsi_lite::topology::ntree::balance;
-  static const flecsi_lite::runtime::name_table<balance> table{
-    "balance", {{"count", balance::count}, {"work", balance::work}}};
+  static const flecsi_lite::runtime::name_table<balance> table{"balance",
+                                                               {{"count", balance::count}, {"work", balance::work}}};
   return table;
 }
 
@@ -150,44 +149,41 @@ parameter_block<run_settings> run_parameters(const run_settings& defaults) {
   run.integer("max_steps", &run_settings::max_steps, "stop after this many steps (0: no limit)").at_least(0);
   run.integer("progress_every", &run_settings::progress_every, "steps between progress lines (0: last only)")
     .at_least(0);
-  run.integer("diagnostics_every", &run_settings::diagnostics_every,
-              "steps between conserved-quantity lines (0: first and last)")
+  run
+    .integer("diagnostics_every", &run_settings::diagnostics_every,
+             "steps between conserved-quantity lines (0: first and last)")
     .at_least(0);
   return run;
 }
 
 namespace {
-std::string derived_problem(const std::string& program, const std::string& what, double value,
-                            const std::string& keys, const std::string& requirement) {
+std::string derived_problem(const std::string& program, const std::string& what, double value, const std::string& keys,
+                            const std::string& requirement) {
   std::ostringstream message;
   message.precision(6);
   message << program << ": " << what << " = " << value << " (from " << keys << ") " << requirement;
   return message.str();
 }
-} // namespace
+}  // namespace
 
-double checked_length(const std::string& program, const std::string& what, double value,
-                      const std::string& keys) {
+double checked_length(const std::string& program, const std::string& what, double value, const std::string& keys) {
   if (!(value >= smallest_length && value <= largest_length))
     throw flecsi_lite::runtime::parameter_error(
       derived_problem(program, what, value, keys, "must be a length in [1e-50, 1e50]"));
   return value;
 }
 
-double checked_positive(const std::string& program, const std::string& what, double value,
-                        const std::string& keys) {
+double checked_positive(const std::string& program, const std::string& what, double value, const std::string& keys) {
   if (!(std::isfinite(value) && value > 0))
-    throw flecsi_lite::runtime::parameter_error(
-      derived_problem(program, what, value, keys, "must be finite and > 0"));
+    throw flecsi_lite::runtime::parameter_error(derived_problem(program, what, value, keys, "must be finite and > 0"));
   return value;
 }
 
-std::int64_t checked_count(const std::string& program, const std::string& what, double value,
-                           const std::string& keys) {
+std::int64_t checked_count(const std::string& program, const std::string& what, double value, const std::string& keys) {
   if (!(value >= 0 && value <= most_particles))
     throw flecsi_lite::runtime::parameter_error(
       derived_problem(program, what, value, keys, "must be a count in [0, 2^40]"));
   return std::llround(value);
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -67,9 +67,9 @@ struct physics_settings {
   /// Adaptive h = eta (m/rho)^(1/D) by Newton-Raphson with grad-h terms (Price 2012), or fixed h.
   bool adaptive_smoothing_length = true;
   double eta = 1.2;
-  double h_tolerance = 1e-6;  ///< on the relative residual of the h-rho relation
-  int h_iterations = 50;      ///< most Newton-Raphson iterations per particle
-  double courant = 0.3;       ///< dt <= courant h / v_signal
+  double h_tolerance = 1e-6;          ///< on the relative residual of the h-rho relation
+  int h_iterations = 50;              ///< most Newton-Raphson iterations per particle
+  double courant = 0.3;               ///< dt <= courant h / v_signal
   double acceleration_factor = 0.25;  ///< dt <= factor sqrt(h / |a|)
   /// The neighbour search reaches 2 (1 + margin) max(h_a, h_b): room for h to grow during the
   /// density iteration before the particles must be searched again.
@@ -118,9 +118,9 @@ flecsi_lite::runtime::parameter_block<physics_settings> physics_parameters(const
 /// How long to run and how often to report.
 struct run_settings {
   double end_time = 0;
-  long max_steps = 0;         ///< 0: no limit
-  long progress_every = 1;    ///< steps between progress lines (0: none until the end)
-  long diagnostics_every = 1; ///< steps between conserved-quantities lines (0: first and last only)
+  long max_steps = 0;          ///< 0: no limit
+  long progress_every = 1;     ///< steps between progress lines (0: none until the end)
+  long diagnostics_every = 1;  ///< steps between conserved-quantities lines (0: first and last only)
 };
 
 /// The run-control keys end_time, max_steps, progress_every and diagnostics_every, with the
@@ -139,10 +139,9 @@ double checked_length(const std::string& program, const std::string& what, doubl
 /// `value` when it is finite and > 0.
 double checked_positive(const std::string& program, const std::string& what, double value, const std::string& keys);
 /// llround(value) when value is in [0, most_particles] (NaN is not): counts of particles, layers.
-std::int64_t checked_count(const std::string& program, const std::string& what, double value,
-                           const std::string& keys);
+std::int64_t checked_count(const std::string& program, const std::string& what, double value, const std::string& keys);
 
 /// Files a run reads and writes (the file keys of the app frame); an empty name is "none".
 using io_settings = flecsi_lite::app::file_settings;
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

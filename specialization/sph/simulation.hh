@@ -90,19 +90,19 @@ struct simulation {
   bool redistribute_next = false;
 
   conserved_totals<D> initial_totals, totals;  ///< at the start, and at the last diagnostics
-  long totals_step = -1;                        ///< step of `totals`
-  std::uint64_t distributions = 0;              ///< calls of ntree::distribute()
+  long totals_step = -1;                       ///< step of `totals`
+  std::uint64_t distributions = 0;             ///< calls of ntree::distribute()
   /// Over the distributions of the steps: particles that changed rank, and the bytes of all
   /// their fields (the traffic of the sample sort's all-to-all; the same on every rank).
   std::uint64_t moved_particles = 0;
   double moved_bytes = 0;
-  std::uint64_t repeated_searches = 0;          ///< searches redone because h outgrew the reach
-  std::uint64_t searches = 0;                   ///< neighbour searches (the lists kept in between)
-  double mean_neighbours = 0;                   ///< at the last progress line, over all ranks
+  std::uint64_t repeated_searches = 0;  ///< searches redone because h outgrew the reach
+  std::uint64_t searches = 0;           ///< neighbour searches (the lists kept in between)
+  double mean_neighbours = 0;           ///< at the last progress line, over all ranks
   std::chrono::steady_clock::time_point started;
-  long started_step = 0;     ///< step when the cycle started
-  double started_time = 0;  ///< simulation time then
-  double elapsed = 0;  ///< wall seconds since the cycle started
+  long started_step = 0;        ///< step when the cycle started
+  double started_time = 0;      ///< simulation time then
+  double elapsed = 0;           ///< wall seconds since the cycle started
   gravity_record last_gravity;  ///< self-gravity only
   balance_record balance;
 
@@ -117,4 +117,4 @@ struct simulation {
   flecsi_lite::future<double> kicked;
 };
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

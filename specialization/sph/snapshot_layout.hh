@@ -51,7 +51,9 @@ std::vector<snapshot_quantity> snapshot_quantities(bool walls, bool gravity) {
     {"Coordinates", {"x", "y", "z"}, {0, 1, 0}, "Positions of the particles (3 columns; zeros beyond the dimension)"},
     {"Velocities", {"vx", "vy", "vz"}, {0, 1, -1}, "Velocities of the particles"},
     {"Masses", {"m"}, {1, 0, 0}, "Masses of the particles"},
-    {"SmoothingLengths", {"h"}, {0, 1, 0},
+    {"SmoothingLengths",
+     {"h"},
+     {0, 1, 0},
      "Smoothing lengths h of the particles; the kernel support radius is 2 h for every kernel (SWIFT's h is "
      "support / kernel_gamma)"},
     {"Densities", {"rho"}, {1, -d, 0}, "Densities of the particles (mass per D-dimensional volume)"},
@@ -60,7 +62,8 @@ std::vector<snapshot_quantity> snapshot_quantities(bool walls, bool gravity) {
     {"SoundSpeeds", {"cs"}, {0, 1, -1}, "Sound speeds of the particles"},
     {"ParticleIDs", {"id"}, {0, 0, 0}, "Unique identifiers of the particles"}};
   if (!walls) {
-    q.push_back({"Accelerations", {"ax", "ay", "az"}, {0, 1, -2}, "Accelerations of the particles (last force evaluation)"});
+    q.push_back(
+      {"Accelerations", {"ax", "ay", "az"}, {0, 1, -2}, "Accelerations of the particles (last force evaluation)"});
     q.push_back({"InternalEnergyRates", {"du_dt"}, {0, 2, -3}, "Time derivatives of the specific internal energies"});
   }
   if (gravity) q.push_back({"Potentials", {"phi"}, {0, 2, -2}, "Gravitational potentials G Phi of the particles"});
@@ -82,9 +85,12 @@ inline std::string cgs_expression(const unit_exponents& e) {
   if (powers[0] == 0 && powers[1] == 0 && powers[2] == 0) return "[ - ] ";
   const auto term = [](const char* symbol, float power) {
     char text[32];
-    if (power == 1) std::snprintf(text, sizeof text, "%s ", symbol);
-    else if (std::remainder(power, 1.0f) == 0) std::snprintf(text, sizeof text, "%s^%d ", symbol, int(power));
-    else std::snprintf(text, sizeof text, "%s^%7.4f ", symbol, double(power));
+    if (power == 1)
+      std::snprintf(text, sizeof text, "%s ", symbol);
+    else if (std::remainder(power, 1.0f) == 0)
+      std::snprintf(text, sizeof text, "%s^%d ", symbol, int(power));
+    else
+      std::snprintf(text, sizeof text, "%s^%7.4f ", symbol, double(power));
     return std::string(text);
   };
   std::string text, bracket = " [ ";
@@ -146,4 +152,4 @@ inline flecsi_lite::io::snapshot_attributes units_group(const unit_system& u) {
           {"Unit temperature in cgs (U_T)", doubles{1}}};
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

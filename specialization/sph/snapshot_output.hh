@@ -141,12 +141,13 @@ std::vector<double> box_size(simulation<D>& s, const std::vector<double>& xyz) {
   }
   return sides;
 }
-} // namespace detail
+}  // namespace detail
 
 template<int D>
 class snapshot_series {
-public:
-  snapshot_series(std::string output_file, snapshot_run run) : output_file_(std::move(output_file)), run_(std::move(run)) {}
+ public:
+  snapshot_series(std::string output_file, snapshot_run run)
+      : output_file_(std::move(output_file)), run_(std::move(run)) {}
 
   std::string path(std::int64_t index) const { return snapshot_path(output_file_, run_.program, index); }
   std::string index_path() const { return snapshot_index_path(output_file_, run_.program); }
@@ -222,15 +223,14 @@ public:
     flecsi_lite::io::write_xdmf_index(flecsi_lite::runtime::communicator(), index_path(), paths_);
   }
 
-private:
-  void write_type(flecsi_lite::io::snapshot_writer& out, simulation<D>& s, int type, const std::vector<std::size_t>& rows,
-                  bool walls) {
+ private:
+  void write_type(flecsi_lite::io::snapshot_writer& out, simulation<D>& s, int type,
+                  const std::vector<std::size_t>& rows, bool walls) {
     const std::string group = part_type_group(type);
     for (const auto& q : snapshot_quantities<D>(walls, s.physics.gravity.enabled)) {
       const auto values = detail::gather_rows(s, q.sources, rows);
       const int columns = static_cast<int>(q.sources.size());
-      std::visit([&](const auto& v) { out.write(group, q.name, v, columns, unit_attributes(run_.units, q)); },
-                 values);
+      std::visit([&](const auto& v) { out.write(group, q.name, v, columns, unit_attributes(run_.units, q)); }, values);
     }
   }
 
@@ -283,8 +283,11 @@ private:
                                   {"TimeStep", doubles{s.dt}}});
     out.set_attributes("Units", units_group(run_.units));
     out.set_attributes("InternalCodeUnits", units_group(run_.units));
-    out.set_attributes("Cosmology", {{"Cosmological run", ints{0}}, {"Redshift", doubles{0}}, {"Scale-factor", doubles{1}},
-                                     {"H0 [internal units]", doubles{0}}, {"h", doubles{1}}});
+    out.set_attributes("Cosmology", {{"Cosmological run", ints{0}},
+                                     {"Redshift", doubles{0}},
+                                     {"Scale-factor", doubles{1}},
+                                     {"H0 [internal units]", doubles{0}},
+                                     {"h", doubles{1}}});
     out.set_attributes("HydroScheme", {{"Scheme", std::string("SPH (FleCSPH-lite)")},
                                        {"Kernel function", std::string(physics::kernel_name(s.physics.kernel))},
                                        {"Kernel support radius over h", doubles{physics::kernel_support}},
@@ -292,12 +295,14 @@ private:
                                        {"Dimension", ints{D}}});
     out.set_attributes("SubgridScheme", {});  // none, but yt opens it
     // SWIFT's engine policies, which yt and pynbody take as the mark of a SWIFT snapshot.
-    out.set_attributes("Policy", {{"hydro", ints{1}}, {"self gravity", ints{s.physics.gravity.enabled}},
-                                  {"external gravity", ints{0}}, {"cosmological integration", ints{0}}});
+    out.set_attributes("Policy", {{"hydro", ints{1}},
+                                  {"self gravity", ints{s.physics.gravity.enabled}},
+                                  {"external gravity", ints{0}},
+                                  {"cosmological integration", ints{0}}});
     // Our keys, and SWIFT's InitialConditions:periodic that yt reads (1 when any axis is periodic).
     auto parameters = detail::parameter_attributes(run_.parameters_text);
-    const bool periodic = std::any_of(s.tree_settings.periodic.begin(), s.tree_settings.periodic.end(),
-                                      [](bool p) { return p; });
+    const bool periodic =
+      std::any_of(s.tree_settings.periodic.begin(), s.tree_settings.periodic.end(), [](bool p) { return p; });
     parameters.push_back({"InitialConditions:periodic", std::string(periodic ? "1" : "0")});
     out.set_attributes("Parameters", parameters);
     out.set_attributes("Code", {{"Code", std::string("FleCSPH-lite")},
@@ -311,4 +316,4 @@ private:
   std::vector<std::string> paths_;  // the series so far, in order
 };
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

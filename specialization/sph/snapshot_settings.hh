@@ -43,16 +43,19 @@ inline const flecsi_lite::runtime::parameter_block<snapshot_settings>& snapshot_
     keys.choice("output_format", &snapshot_settings::format, output_format_names(),
                 "h5part: output_file; snapshots: GADGET/SWIFT HDF5 <stem>_NNNN.hdf5 and <stem>.xdmf beside "
                 "output_file; both");
-    keys.real("unit_mass_in_cgs", member(&snapshot_settings::units, &unit_system::mass_in_cgs),
-              "the code unit of mass in grams (written in the snapshots' Units)")
+    keys
+      .real("unit_mass_in_cgs", member(&snapshot_settings::units, &unit_system::mass_in_cgs),
+            "the code unit of mass in grams (written in the snapshots' Units)")
       .greater_than(0)
       .at_most(1e100);
-    keys.real("unit_length_in_cgs", member(&snapshot_settings::units, &unit_system::length_in_cgs),
-              "the code unit of length in centimetres")
+    keys
+      .real("unit_length_in_cgs", member(&snapshot_settings::units, &unit_system::length_in_cgs),
+            "the code unit of length in centimetres")
       .greater_than(0)
       .at_most(1e100);
-    keys.real("unit_time_in_cgs", member(&snapshot_settings::units, &unit_system::time_in_cgs),
-              "the code unit of time in seconds")
+    keys
+      .real("unit_time_in_cgs", member(&snapshot_settings::units, &unit_system::time_in_cgs),
+            "the code unit of time in seconds")
       .greater_than(0)
       .at_most(1e100);
     return keys;
@@ -60,4 +63,4 @@ inline const flecsi_lite::runtime::parameter_block<snapshot_settings>& snapshot_
   return block;
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -79,9 +79,8 @@ flecsi_lite::control::control_model<State> make_control_model() {
   // advance: one kick-drift-kick step.
   {
     auto drift = on("advance", "kick_drift", first_kick_and_drift<D>);
-    auto search = on("advance", "search", [](base& s) {
-      update_neighbours(s, std::exchange(s.redistribute_next, false));
-    });
+    auto search =
+      on("advance", "search", [](base& s) { update_neighbours(s, std::exchange(s.redistribute_next, false)); });
     auto density = on("advance", "density", update_density<D>);
     auto pressure = on("advance", "equation_of_state", update_pressure<D>);
     auto forces = on("advance", "forces", update_forces<D>);
@@ -101,4 +100,4 @@ FLECSPH_SPH_STEP_INSTANCES(extern, 1)
 FLECSPH_SPH_STEP_INSTANCES(extern, 2)
 FLECSPH_SPH_STEP_INSTANCES(extern, 3)
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -30,7 +30,7 @@ namespace flecsph::sph {
 struct statistics_settings {
   /// "auto": <output stem>.statistics.txt (<program>.statistics.txt without output); empty: none.
   std::string file = "auto";
-  long every = 1;             ///< steps between rows; the first and the last step always have one
+  long every = 1;  ///< steps between rows; the first and the last step always have one
 };
 
 inline const flecsi_lite::runtime::parameter_block<statistics_settings>& statistics_parameters() {
@@ -38,8 +38,7 @@ inline const flecsi_lite::runtime::parameter_block<statistics_settings>& statist
     flecsi_lite::runtime::parameter_block<statistics_settings> keys;
     keys.file("statistics_file", &statistics_settings::file,
               "one line per step of the conserved totals (auto: <output stem>.statistics.txt; none: off)");
-    keys.integer("statistics_every", &statistics_settings::every, "steps between lines of statistics_file")
-      .at_least(1);
+    keys.integer("statistics_every", &statistics_settings::every, "steps between lines of statistics_file").at_least(1);
     return keys;
   }();
   return block;
@@ -53,7 +52,8 @@ struct statistics_column {
 /// The columns; with self-gravity (`gravity`) a potential energy column after the internal one;
 /// an app's own columns (`extra`) last.
 template<int D>
-std::vector<statistics_column> statistics_columns(bool gravity = false, const std::vector<statistics_column>& extra = {}) {
+std::vector<statistics_column> statistics_columns(bool gravity = false,
+                                                  const std::vector<statistics_column>& extra = {}) {
   static const char* axes[] = {"x", "y", "z"};
   std::vector<statistics_column> columns = {
     {"step", "step number", "1"},
@@ -64,16 +64,16 @@ std::vector<statistics_column> statistics_columns(bool gravity = false, const st
     {"walls", "energy the wall particles received (work of the fluid on them)", "M L^2 T^-2"},
     {"total", "total energy, kinetic + internal + walls, summed exactly", "M L^2 T^-2"}};
   if (gravity) {
-    columns.insert(columns.begin() + 5, {"potential", "gravitational energy W = 1/2 sum m Phi (self terms included)",
-                                         "M L^2 T^-2"});
+    columns.insert(columns.begin() + 5,
+                   {"potential", "gravitational energy W = 1/2 sum m Phi (self terms included)", "M L^2 T^-2"});
     columns.back().meaning = "total energy E = kinetic + internal + potential + walls, summed exactly";
   }
   for (int k = 0; k < D; ++k)
     columns.push_back({std::string("momentum_") + axes[k], "linear momentum (walls' impulse included)", "M L T^-1"});
   const char* angular_axes[] = {D == 2 ? "z" : "x", "y", "z"};
   for (int k = 0; k < angular_components<D>; ++k)
-    columns.push_back({std::string("angular_momentum_") + angular_axes[k], "angular momentum about the origin",
-                       "M L^2 T^-1"});
+    columns.push_back(
+      {std::string("angular_momentum_") + angular_axes[k], "angular momentum about the origin", "M L^2 T^-1"});
   columns.push_back({"mass", "mass of the fluid particles", "M"});
   columns.push_back({"mean_neighbours", "neighbours per particle, mean over all particles", "1"});
   columns.insert(columns.end(), extra.begin(), extra.end());
@@ -123,7 +123,7 @@ std::string statistics_line(long step, double time, double dt, const conserved_t
 /// The open statistics file; only rank 0 holds a stream, every call is collective so that a
 /// failure (a full disk) is the same io_error on every rank.
 class statistics_log {
-public:
+ public:
   bool is_open() const { return open_; }
   const std::string& path() const { return path_; }
 
@@ -158,7 +158,7 @@ public:
     });
   }
 
-private:
+ private:
   /// The text of `path` without its rows after `step`; throws unless its column line is `header`'s.
   static std::string rows_up_to(const std::string& path, const std::string& header, long step) {
     const auto column_line = [](const std::string& text) {
@@ -200,4 +200,4 @@ private:
   std::ofstream out_;  // rank 0 only
 };
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

@@ -42,8 +42,8 @@ struct time_step_report_reduction {
 };
 template<int D>
 time_step_report limiting_particle(physics_settings settings, ro<std::uint64_t> id, ro<particle_kind> kind,
-                                   ro<double> h, ro<double> c, ro<vector<D>> acceleration, ro<double> rho,
-                                   ro<double> p, ro<double> u) {
+                                   ro<double> h, ro<double> c, ro<vector<D>> acceleration, ro<double> rho, ro<double> p,
+                                   ro<double> u) {
   time_step_report worst;
   for (std::size_t a = 0; a < h.size(); ++a) {
     if (kind(a) != particle_kind::fluid) continue;
@@ -55,8 +55,9 @@ time_step_report limiting_particle(physics_settings settings, ro<std::uint64_t> 
     r.courant_dt = settings.courant * r.h / (2 * r.sound_speed);  // v_signal >= c_a + c_b
     r.acceleration_dt = settings.acceleration_factor * std::sqrt(r.h / r.acceleration);
     const double smallest = std::min(r.courant_dt, r.acceleration_dt);
-    r.score = std::isfinite(r.courant_dt) && std::isfinite(r.acceleration_dt) ? smallest
-                                                                              : -std::numeric_limits<double>::infinity();
+    r.score = std::isfinite(r.courant_dt) && std::isfinite(r.acceleration_dt)
+                ? smallest
+                : -std::numeric_limits<double>::infinity();
     worst = time_step_report_reduction::combine(worst, r);
   }
   return worst;
@@ -85,7 +86,7 @@ std::string time_step_failure(simulation<D>& s, double next) {
     << s.physics.eta << " too small for its spacing) or pressures, densities or energies out of range";
   return m.str();
 }
-} // namespace detail
+}  // namespace detail
 
 /// Distributes the particles (sample sort, ghosts, local tree) when `redistribute` is set or when
 /// the particles' motion and growth of h since the last distribution could have brought particles
@@ -103,10 +104,10 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
   auto& p = *s.particles;
   bool search = true;
   if (!redistribute) {
-    const auto slack = flecsi_lite::reduce<measure_neighbour_slack<D>, neighbour_slack_reduction>(
-                         s.neighbours, p.space(), f::position()(p), f::smoothing_length()(p), f::drift(p),
-                         f::distributed_h(p))
-                         .get();
+    const auto slack =
+      flecsi_lite::reduce<measure_neighbour_slack<D>, neighbour_slack_reduction>(
+        s.neighbours, p.space(), f::position()(p), f::smoothing_length()(p), f::drift(p), f::distributed_h(p))
+        .get();
     const double support = p.settings().support;
     redistribute = !ghosts_still_suffice(slack.distribution, support, s.physics.distribution_skin);
     // Individual time steps search the active particles of every step (their rows only).
@@ -131,8 +132,10 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
   }
   if (search) {
     // A task: after the refit, and after the last readers of the old lists.
-    if (s.physics.individual_time_steps()) find_active_neighbours(s);
-    else find_neighbours(p, s.neighbours, s.physics.list_skin);
+    if (s.physics.individual_time_steps())
+      find_active_neighbours(s);
+    else
+      find_neighbours(p, s.neighbours, s.physics.list_skin);
     ++s.searches;
     if (redistribute)
       s.balance.expect(count_imbalance,
@@ -199,10 +202,9 @@ void update_pressure(simulation<D>& s) {
       },
       std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
                       f::omega(p), f::velocity_divergence(p), f::velocity_curl(p)));
-  flecsi_lite::execute<compute_equation_of_state<D>>(s.physics, f::density(p), f::internal_energy(p),
-                                                     f::smoothing_length()(p), f::omega(p),
-                                                     f::velocity_divergence(p), f::velocity_curl(p), f::pressure(p),
-                                                     f::sound_speed(p), f::pressure_term(p), f::balsara(p));
+  flecsi_lite::execute<compute_equation_of_state<D>>(
+    s.physics, f::density(p), f::internal_energy(p), f::smoothing_length()(p), f::omega(p), f::velocity_divergence(p),
+    f::velocity_curl(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p), f::balsara(p));
 }
 
 /// Accelerations and du/dt (with self-gravity: plus the grad-h gravity term and the tree's
@@ -212,9 +214,9 @@ template<int D>
 void update_forces(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
-  const auto fields_read = std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
-                                           f::density(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p),
-                                           f::internal_energy(p), f::balsara(p));
+  const auto fields_read =
+    std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
+                    f::pressure(p), f::sound_speed(p), f::pressure_term(p), f::internal_energy(p), f::balsara(p));
   const auto fields_written =
     std::make_tuple(f::kind(p), f::acceleration(p), f::internal_energy_rate(p), f::own_time_step(p));
   const double none = std::numeric_limits<double>::max();
@@ -231,8 +233,7 @@ void update_forces(simulation<D>& s) {
   }
   s.next_time_step = std::apply(
     [&](auto... field) {
-      auto interior =
-        flecsi_lite::execute<compute_forces<D, flecsi_lite::na>>(s.neighbours, s.physics, none, field...);
+      auto interior = flecsi_lite::execute<compute_forces<D, flecsi_lite::na>>(s.neighbours, s.physics, none, field...);
       return flecsi_lite::reduce<compute_forces<D, flecsi_lite::ro>, flecsi_lite::reduction::min>(
         s.neighbours, s.physics, interior, field...);
     },
@@ -255,9 +256,9 @@ void second_kick(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
   if (s.physics.individual_time_steps()) return second_kick_bins(s);
-  flecsi_lite::execute<kick<D>>(s.dt, f::kind(p), f::velocity_half(p), f::internal_energy_half(p),
-                                f::acceleration(p), f::internal_energy_rate(p), f::velocity(p),
-                                f::internal_energy(p), f::boundary_impulse(p), f::boundary_work(p));
+  flecsi_lite::execute<kick<D>>(s.dt, f::kind(p), f::velocity_half(p), f::internal_energy_half(p), f::acceleration(p),
+                                f::internal_energy_rate(p), f::velocity(p), f::internal_energy(p),
+                                f::boundary_impulse(p), f::boundary_work(p));
 }
 
 /// The step just taken moves the clock; the next step is the global minimum of the particles'
@@ -283,4 +284,4 @@ void choose_time_step(simulation<D>& s, bool advance) {
   s.dt = std::min(next, s.run.end_time - s.time);
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

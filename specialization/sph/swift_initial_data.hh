@@ -21,7 +21,6 @@
 
 #include "flecsi_lite/io.hh"
 
-
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -35,9 +34,11 @@ namespace flecsph::sph {
 /// Our field datasets (fields.hh, the tree's x y z id m h) in SWIFT's initial-conditions names.
 template<int D>
 std::map<std::string, flecsi_lite::io::gadget_reader::column> swift_initial_columns() {
-  std::map<std::string, flecsi_lite::io::gadget_reader::column> columns{
-    {"m", {"Masses"}}, {"h", {"SmoothingLength"}}, {"u", {"InternalEnergy"}},
-    {"id", {"ParticleIDs"}}, {"rho", {"Density"}}};
+  std::map<std::string, flecsi_lite::io::gadget_reader::column> columns{{"m", {"Masses"}},
+                                                                        {"h", {"SmoothingLength"}},
+                                                                        {"u", {"InternalEnergy"}},
+                                                                        {"id", {"ParticleIDs"}},
+                                                                        {"rho", {"Density"}}};
   const char* axes[] = {"x", "y", "z"};
   const char* velocities[] = {"vx", "vy", "vz"};
   for (int k = 0; k < D; ++k) {
@@ -75,16 +76,17 @@ void check_swift_header(const flecsi_lite::io::gadget_reader& in, const unit_sys
   if (in.has_attribute("Header", "Flag_Entropy_ICs"))
     for (const double flag : in.numbers("Header", "Flag_Entropy_ICs"))
       if (flag != 0)
-        refuse("has Header/Flag_Entropy_ICs = 1 (InternalEnergy holds entropies): give internal energies "
-               "and Flag_Entropy_ICs = 0");
+        refuse(
+          "has Header/Flag_Entropy_ICs = 1 (InternalEnergy holds entropies): give internal energies "
+          "and Flag_Entropy_ICs = 0");
   const auto low = in.numbers("Header", "NumPart_Total");
   std::vector<double> high(low.size(), 0.0);
   if (in.has_attribute("Header", "NumPart_Total_HighWord")) high = in.numbers("Header", "NumPart_Total_HighWord");
   for (std::size_t type = 0; type < low.size(); ++type) {
     const double total = low[type] + (type < high.size() ? high[type] : 0.0) * 4294967296.0;
     if (type == 0 && total != static_cast<double>(in.particle_count()))
-      refuse("Header/NumPart_Total[0] = " + std::to_string(static_cast<std::uint64_t>(total)) + " but PartType0 holds " +
-             std::to_string(in.particle_count()) + " particles");
+      refuse("Header/NumPart_Total[0] = " + std::to_string(static_cast<std::uint64_t>(total)) +
+             " but PartType0 holds " + std::to_string(in.particle_count()) + " particles");
     if (type > 0 && total != 0)
       refuse("holds " + std::to_string(static_cast<std::uint64_t>(total)) + " particles of type " +
              std::to_string(type) + " (Header/NumPart_Total[" + std::to_string(type) +
@@ -106,7 +108,7 @@ void check_swift_header(const flecsi_lite::io::gadget_reader& in, const unit_sys
              " (the run then works in the file's units)");
   }
 }
-} // namespace detail
+}  // namespace detail
 
 /// Collective: creates the particles of `s` from the SWIFT-format initial conditions `path` (this
 /// rank's block, with their initial fields), after the Header's checks against dimension D and
@@ -122,4 +124,4 @@ std::uint64_t read_swift_initial_data(simulation<D>& s, const std::string& path,
   return in.particle_count();
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

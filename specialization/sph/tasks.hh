@@ -38,4 +38,4 @@ using ro_with_ghosts = accessor<T, flecsi_lite::ro, flecsi_lite::ro>;
 template<class T, flecsi_lite::privilege Ghost>
 using ro_neighbours = accessor<T, flecsi_lite::ro, Ghost>;
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

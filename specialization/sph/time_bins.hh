@@ -45,11 +45,14 @@ inline constexpr std::int32_t wall_bin = timeline::bins;
 /// criterion is known.
 template<int D>
 void start_time_bins(wo<std::int32_t> time_bin, wo<std::int64_t> step_begin, wo<std::int64_t> step_end) {
-  flecsi_lite::forall(time_bin.size(), [&](std::size_t a) {
-    time_bin(a) = wall_bin;
-    step_begin(a) = 0;
-    step_end(a) = 0;
-  }, "sph::start_time_bins");
+  flecsi_lite::forall(
+    time_bin.size(),
+    [&](std::size_t a) {
+      time_bin(a) = wall_bin;
+      step_begin(a) = 0;
+      step_end(a) = 0;
+    },
+    "sph::start_time_bins");
 }
 
 /// The targets whose step ends at tick `next`, for the pair tasks (neighbourhood::targets), and
@@ -80,48 +83,50 @@ active_count select_active(typename tracked_neighbourhood<D>::template accessor<
 /// The first kick of the particles whose step starts now, the drift of every fluid particle to
 /// `clock.next` and the prediction of v and u there (walls: their accumulators, as kick_drift).
 template<int D>
-void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<particle_kind> kind,
-                     rw<vector<D>> x, rw<vector<D>> v, rw<vector<D>> v_half, rw<double> u, rw<double> u_half,
-                     ro<vector<D>> acceleration, ro<double> du_dt, ro<double> velocity_divergence, rw<double> rho,
-                     rw<double> h, rw<vector<D>> impulse, rw<double> work, rw<double> drift,
-                     rw<std::int32_t> time_bin, rw<std::int64_t> step_begin, rw<std::int64_t> step_end) {
+void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<particle_kind> kind, rw<vector<D>> x,
+                     rw<vector<D>> v, rw<vector<D>> v_half, rw<double> u, rw<double> u_half, ro<vector<D>> acceleration,
+                     ro<double> du_dt, ro<double> velocity_divergence, rw<double> rho, rw<double> h,
+                     rw<vector<D>> impulse, rw<double> work, rw<double> drift, rw<std::int32_t> time_bin,
+                     rw<std::int64_t> step_begin, rw<std::int64_t> step_end) {
   const double dt = clock.duration(clock.next - clock.now), half_dt = 0.5 * dt;
-  flecsi_lite::forall(x.size(), [&](std::size_t a) {
-    const vector<D>& acc = acceleration(a);
-    if (kind(a) != particle_kind::fluid) {
-      accumulate_on_wall<D>(half_dt, acc, du_dt(a), impulse(a), work(a));
-      v_half(a) = v(a);
-      u_half(a) = u(a);
-      time_bin(a) = wall_bin;
-      step_begin(a) = clock.now;
-      step_end(a) = clock.next;
-      return;
-    }
-    const double length = clock.duration(step_end(a) - step_begin(a));
-    if (step_begin(a) == clock.now) {
-      for (int k = 0; k < D; ++k) v_half(a)[k] = v(a)[k] + 0.5 * length * acc[k];
-      u_half(a) = u(a) + 0.5 * length * du_dt(a);
-    }
-    drift_by<D>(dt, v_half(a), space, x(a), drift(a));
-    const double since_middle = clock.duration(clock.next - step_begin(a)) - 0.5 * length;
-    for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + since_middle * acc[k];
-    u(a) = u_half(a) + since_middle * du_dt(a);
-    if (step_end(a) == clock.next) return;  // active at next: its density is computed there
-    // Inactive: rho and h follow the flow's compression (drho/dt = -rho div v, h ~ rho^(-1/D)),
-    // so that active neighbours see them at the current time (GADGET-2, sec. 5; SWIFT's drift).
-    const double stretch = std::clamp(dt * velocity_divergence(a), -0.5, 0.5);
-    rho(a) *= std::exp(-stretch);
-    if (adaptive_h) h(a) *= std::exp(stretch / D);
-  }, "sph::kick_drift_bins");
+  flecsi_lite::forall(
+    x.size(),
+    [&](std::size_t a) {
+      const vector<D>& acc = acceleration(a);
+      if (kind(a) != particle_kind::fluid) {
+        accumulate_on_wall<D>(half_dt, acc, du_dt(a), impulse(a), work(a));
+        v_half(a) = v(a);
+        u_half(a) = u(a);
+        time_bin(a) = wall_bin;
+        step_begin(a) = clock.now;
+        step_end(a) = clock.next;
+        return;
+      }
+      const double length = clock.duration(step_end(a) - step_begin(a));
+      if (step_begin(a) == clock.now) {
+        for (int k = 0; k < D; ++k) v_half(a)[k] = v(a)[k] + 0.5 * length * acc[k];
+        u_half(a) = u(a) + 0.5 * length * du_dt(a);
+      }
+      drift_by<D>(dt, v_half(a), space, x(a), drift(a));
+      const double since_middle = clock.duration(clock.next - step_begin(a)) - 0.5 * length;
+      for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + since_middle * acc[k];
+      u(a) = u_half(a) + since_middle * du_dt(a);
+      if (step_end(a) == clock.next) return;  // active at next: its density is computed there
+      // Inactive: rho and h follow the flow's compression (drho/dt = -rho div v, h ~ rho^(-1/D)),
+      // so that active neighbours see them at the current time (GADGET-2, sec. 5; SWIFT's drift).
+      const double stretch = std::clamp(dt * velocity_divergence(a), -0.5, 0.5);
+      rho(a) *= std::exp(-stretch);
+      if (adaptive_h) h(a) *= std::exp(stretch / D);
+    },
+    "sph::kick_drift_bins");
 }
 
 /// The second kick of the active particles (their step ends at clock.next) with the new forces.
 /// Returns how many fluid particles it kicked.
 template<int D>
 double kick_bins(timeline clock, ro<particle_kind> kind, ro<vector<D>> v_half, ro<double> u_half,
-                 ro<vector<D>> acceleration, ro<double> du_dt, ro<std::int64_t> step_begin,
-                 ro<std::int64_t> step_end, rw<vector<D>> v, rw<double> u, rw<vector<D>> impulse,
-                 rw<double> work) {
+                 ro<vector<D>> acceleration, ro<double> du_dt, ro<std::int64_t> step_begin, ro<std::int64_t> step_end,
+                 rw<vector<D>> v, rw<double> u, rw<vector<D>> impulse, rw<double> work) {
   const double half_dt = 0.5 * clock.duration(clock.next - clock.now);
   double kicked = 0;
   flecsi_lite::forall_reduce(
@@ -172,14 +177,13 @@ namespace detail {
 /// Whether entry j of a's list is within the kernel support of either, |r_ab| < 2 max(h_a, h_b):
 /// the pairs of the force sums, which the limiter looks at.
 template<int D, class Positions, class Lengths>
-bool within_kernel(const neighbour_walk<D>& walk, const Positions& x, const Lengths& h, std::size_t a,
-                   std::size_t j) {
+bool within_kernel(const neighbour_walk<D>& walk, const Positions& x, const Lengths& h, std::size_t a, std::size_t j) {
   const std::size_t b = walk.neighbour(j);
   const double reach = physics::kernel_support * std::max(h(a), h(b));
   vector<D> r;
   return walk.separation(x(a), x(b), j, r) < reach * reach;
 }
-} // namespace detail
+}  // namespace detail
 
 /// The smallest bin among the neighbours of each active particle (its step ended at `now`) within
 /// the kernel support of either (|r_ab| < 2 max(h_a, h_b), the pairs of the force sums), itself
@@ -189,13 +193,16 @@ void find_neighbour_bins(neighbours_ro<D> neighbours, std::int64_t now, ro_with_
                          ro_with_ghosts<double> h, ro_with_ghosts<std::int32_t> time_bin, ro<std::int64_t> step_end,
                          rw<std::int32_t> neighbour_bin) {
   const neighbour_walk<D> walk(*neighbours);
-  flecsi_lite::forall(neighbours->size(), [&](std::size_t a) {
-    if (step_end(a) != now) return;
-    std::int32_t smallest = time_bin(a);
-    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j)
-      if (detail::within_kernel(walk, x, h, a, j)) smallest = std::min(smallest, time_bin(walk.neighbour(j)));
-    neighbour_bin(a) = smallest;
-  }, "sph::find_neighbour_bins");
+  flecsi_lite::forall(
+    neighbours->size(),
+    [&](std::size_t a) {
+      if (step_end(a) != now) return;
+      std::int32_t smallest = time_bin(a);
+      for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j)
+        if (detail::within_kernel(walk, x, h, a, j)) smallest = std::min(smallest, time_bin(walk.neighbour(j)));
+      neighbour_bin(a) = smallest;
+    },
+    "sph::find_neighbour_bins");
 }
 
 /// The limiter on the active particles (`levels` = log2 of time_step_limiter; negative: off):
@@ -203,12 +210,15 @@ void find_neighbour_bins(neighbours_ro<D> neighbours, std::int64_t now, ro_with_
 template<int D>
 void limit_active_bins(std::int64_t now, int levels, ro<particle_kind> kind, ro<std::int32_t> neighbour_bin,
                        rw<std::int32_t> time_bin, rw<std::int64_t> step_begin, rw<std::int64_t> step_end) {
-  flecsi_lite::forall(time_bin.size(), [&](std::size_t a) {
-    if (kind(a) != particle_kind::fluid || step_end(a) != now) return;
-    if (levels >= 0) time_bin(a) = std::min(time_bin(a), neighbour_bin(a) + levels);  // aligned: smaller than one
-    step_begin(a) = now;
-    step_end(a) = now + timeline::ticks_of(time_bin(a));
-  }, "sph::limit_active_bins");
+  flecsi_lite::forall(
+    time_bin.size(),
+    [&](std::size_t a) {
+      if (kind(a) != particle_kind::fluid || step_end(a) != now) return;
+      if (levels >= 0) time_bin(a) = std::min(time_bin(a), neighbour_bin(a) + levels);  // aligned: smaller than one
+      step_begin(a) = now;
+      step_end(a) = now + timeline::ticks_of(time_bin(a));
+    },
+    "sph::limit_active_bins");
 }
 
 /// For each inactive owned particle, the smallest bin among the particles that started a step
@@ -219,26 +229,33 @@ void limit_active_bins(std::int64_t now, int levels, ro<particle_kind> kind, ro<
 /// them only. Active ones keep their bound (find_neighbour_bins). A minimum: the same in any order.
 template<int D>
 void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
-                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now,
-                      ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
+                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now, ro_with_ghosts<vector<D>> x,
+                      ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
                       ro_with_ghosts<std::int32_t> time_bin, rw<std::int32_t> neighbour_bin) {
   const std::size_t owned = neighbour_bin.size(), stored = local->size();
   std::int32_t* bound = neighbour_bin.data();
   const auto waits = [&](std::size_t b) { return b < owned && step_begin(b) != now; };
-  flecsi_lite::forall(owned, [&](std::size_t b) {
-    if (waits(b)) bound[b] = wall_bin;
-  }, "sph::find_waking_bins::start");
+  flecsi_lite::forall(
+    owned,
+    [&](std::size_t b) {
+      if (waits(b)) bound[b] = wall_bin;
+    },
+    "sph::find_waking_bins::start");
   const neighbour_walk<D> walk(*neighbours);
-  flecsi_lite::forall(owned, [&](std::size_t a) {
-    if (step_begin(a) != now) return;
-    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-      const std::size_t b = walk.neighbour(j);
-      if (waits(b) && detail::within_kernel(walk, x, h, a, j)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
-    }
-  }, "sph::find_waking_bins::owned");
+  flecsi_lite::forall(
+    owned,
+    [&](std::size_t a) {
+      if (step_begin(a) != now) return;
+      for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
+        const std::size_t b = walk.neighbour(j);
+        if (waits(b) && detail::within_kernel(walk, x, h, a, j)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
+      }
+    },
+    "sph::find_waking_bins::owned");
   std::vector<std::uint8_t> ghost_sources(stored);
-  flecsi_lite::forall(stored, [&](std::size_t a) { ghost_sources[a] = a >= owned && step_begin(a) == now; },
-                      "sph::find_waking_bins::ghosts");
+  flecsi_lite::forall(
+    stored, [&](std::size_t a) { ghost_sources[a] = a >= owned && step_begin(a) == now; },
+    "sph::find_waking_bins::ghosts");
   local->for_each_neighbour_of(ghost_sources, tree::interaction::symmetric, physics::kernel_support, space,
                                [&](std::size_t a, std::size_t b, const auto&) {
                                  if (waits(b)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
@@ -320,8 +337,8 @@ template<int D>
 void select_active_targets(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
-  s.active_targets = flecsi_lite::reduce<select_active<D>, active_count_sum>(s.neighbours, s.clock.next,
-                                                                             f::step_end(p), f::time_bin(p), f::work(p));
+  s.active_targets = flecsi_lite::reduce<select_active<D>, active_count_sum>(s.neighbours, s.clock.next, f::step_end(p),
+                                                                             f::time_bin(p), f::work(p));
 }
 
 /// Searches the neighbours of the particles whose step ends at s.clock.next (the others' rows
@@ -386,9 +403,8 @@ void choose_time_bins(simulation<D>& s, bool advance) {
   }
   const int levels = limiter_levels(s.physics);
   if (levels >= 0)
-    flecsi_lite::execute<find_neighbour_bins<D>>(s.neighbours, s.clock.now, f::position()(p),
-                                                 f::smoothing_length()(p), f::time_bin(p), f::step_end(p),
-                                                 f::neighbour_bin(p));
+    flecsi_lite::execute<find_neighbour_bins<D>>(s.neighbours, s.clock.now, f::position()(p), f::smoothing_length()(p),
+                                                 f::time_bin(p), f::step_end(p), f::neighbour_bin(p));
   flecsi_lite::execute<limit_active_bins<D>>(s.clock.now, levels, f::kind(p), f::neighbour_bin(p), f::time_bin(p),
                                              f::step_begin(p), f::step_end(p));
   if (levels >= 0) {
@@ -406,4 +422,4 @@ void choose_time_bins(simulation<D>& s, bool advance) {
   s.dt = s.clock.duration(s.clock.next - s.clock.now);
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

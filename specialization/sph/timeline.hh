@@ -15,8 +15,8 @@ struct timeline {
   static constexpr int bins = 40;
   static constexpr std::int64_t span = std::int64_t{1} << bins;
 
-  double origin = 0;  ///< the time of tick 0
-  double tick = 0;    ///< (end_time - origin) / span
+  double origin = 0;      ///< the time of tick 0
+  double tick = 0;        ///< (end_time - origin) / span
   std::int64_t now = 0;   ///< the current time, in ticks
   std::int64_t next = 0;  ///< the end of the step about to be taken (the earliest particle's end)
 
@@ -38,7 +38,7 @@ struct timeline {
 
 /// The largest bin whose step fits in dt (at most `largest`); -1 when even one tick is longer.
 inline int bin_of_step(double dt, double tick, int largest) {
-  if (!(dt >= tick)) return -1;  // NaN too
+  if (!(dt >= tick)) return -1;     // NaN too
   int bin = std::ilogb(dt / tick);  // floor(log2) of a value >= 1
   if (bin > largest) bin = largest;
   while (bin > 0 && std::ldexp(tick, bin) > dt) --bin;  // ilogb of the rounded quotient
@@ -52,4 +52,4 @@ inline int aligned_bin(int wanted, std::int64_t at) {
   return bin;
 }
 
-} // namespace flecsph::sph
+}  // namespace flecsph::sph

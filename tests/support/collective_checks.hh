@@ -67,4 +67,4 @@ std::string error_message(Body&& body) {
   return "<no exception>";
 }
 
-} // namespace io_test
+}  // namespace io_test

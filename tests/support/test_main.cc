@@ -5,8 +5,8 @@
 
 #include "flecsi_lite/runtime/context.hh"
 
-#include <Kokkos_Core.hpp>
 #include <mpi.h>
+#include <Kokkos_Core.hpp>
 
 int main(int argc, char** argv) {
   int provided = 0;

@@ -26,7 +26,7 @@ std::size_t differences(const io::h5part_reader& a, const io::h5part_reader& b, 
       std::cout << "  " << name << "[" << i << "]: " << x[i] << " != " << y[i] << "\n";
   return count;
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   runtime::options options("Compares the last steps of two H5Part files bit by bit.");
@@ -56,12 +56,25 @@ int main(int argc, char** argv) {
       }
       std::size_t n = 0;
       switch (type) {
-      case io::element_type::float64: n = differences<double>(a, b, name); break;
-      case io::element_type::float32: n = differences<float>(a, b, name); break;
-      case io::element_type::int64: n = differences<std::int64_t>(a, b, name); break;
-      case io::element_type::uint64: n = differences<std::uint64_t>(a, b, name); break;
-      case io::element_type::int32: n = differences<std::int32_t>(a, b, name); break;
-      case io::element_type::unsupported: std::cout << name << ": unsupported type\n"; same = false; continue;
+        case io::element_type::float64:
+          n = differences<double>(a, b, name);
+          break;
+        case io::element_type::float32:
+          n = differences<float>(a, b, name);
+          break;
+        case io::element_type::int64:
+          n = differences<std::int64_t>(a, b, name);
+          break;
+        case io::element_type::uint64:
+          n = differences<std::uint64_t>(a, b, name);
+          break;
+        case io::element_type::int32:
+          n = differences<std::int32_t>(a, b, name);
+          break;
+        case io::element_type::unsupported:
+          std::cout << name << ": unsupported type\n";
+          same = false;
+          continue;
       }
       if (n) {
         std::cout << name << ": " << n << " of " << a.particle_count(step_a) << " values differ\n";
@@ -69,8 +82,8 @@ int main(int argc, char** argv) {
       }
       ++compared;
     }
-    std::cout << (same ? "identical" : "DIFFERENT") << ": " << compared << " datasets of "
-              << a.particle_count(step_a) << " particles at t = " << time_a << "\n";
+    std::cout << (same ? "identical" : "DIFFERENT") << ": " << compared << " datasets of " << a.particle_count(step_a)
+              << " particles at t = " << time_a << "\n";
     return same ? 0 : 1;
   } catch (const std::exception& e) {
     std::cerr << "compare_h5part: " << e.what() << "\n";

@@ -35,14 +35,17 @@ control::control_model<state> make_model() {
   // Registered in the "wrong" order: the dependencies decide, not the registration.
   auto forces = m.action("advance", "forces", record("forces"));
   auto density = m.action("advance", "density", record("density"));
-  auto move = m.action("advance", "move", [](state& s) { s.ran.push_back("move"); ++s.step; });
+  auto move = m.action("advance", "move", [](state& s) {
+    s.ran.push_back("move");
+    ++s.step;
+  });
   m.depends(forces, density);  // forces after density
   m.depends(move, forces);     // move after forces
   m.action("analyze", "output", record("output"));
   m.action("finalize", "report", record("report"));
   return m;
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   runtime::runtime rt(argc, argv, runtime::options("Tutorial 2: control points, cycles, actions, dependencies."));

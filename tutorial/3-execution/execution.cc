@@ -4,8 +4,8 @@
 // tell the executor which launches depend on which: the program reads as sequential code.
 //
 //   mpirun -np 2 tutorial_3_execution
-#include "flecsi_lite/data.hh"
 #include "flecsi_lite/execution.hh"
+#include "flecsi_lite/data.hh"
 #include "flecsi_lite/runtime.hh"
 #include "flecsi_lite/topology/narray.hh"
 
@@ -39,7 +39,7 @@ double local_max(field<double>::accessor<ro> v) {
 }
 std::uint64_t local_count(field<double>::accessor<ro> v) { return v.size(); }
 double inverse(double x) { return 1 / x; }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   runtime::runtime rt(argc, argv, runtime::options("Tutorial 3: tasks, futures and privileges."));
@@ -61,8 +61,8 @@ int main(int argc, char** argv) {
 
   // get() runs the executor until the value is there.
   const double expected_total = double(n) * double(n - 1) / 2;
-  const bool correct = total.get() == expected_total && largest.get() == double(n - 1) && count.get() == n &&
-                       normalized.get() == 1.0;
+  const bool correct =
+    total.get() == expected_total && largest.get() == double(n - 1) && count.get() == n && normalized.get() == 1.0;
   log::info() << "sum " << total.get() << ", max " << largest.get() << ", entities " << count.get()
               << ", max after scaling " << normalized.get();
   if (!correct) log::error() << "tutorial 3: wrong reduction results";

@@ -41,7 +41,7 @@ bool all_ranks(bool mine) {
   return out;
 }
 std::uint64_t copies() { return execution::executor::instance().ghost_copies_started(); }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   runtime::runtime rt(argc, argv, runtime::options("Tutorial 4: fields, owned and ghost entities, ghost copies."));
@@ -52,12 +52,12 @@ int main(int argc, char** argv) {
               << mesh.ghost_size() << " ghosts";
 
   const std::uint64_t before = copies();
-  execute<set_owned>(mesh, u(mesh), 1.0);         // owned values change: ghosts are stale
+  execute<set_owned>(mesh, u(mesh), 1.0);  // owned values change: ghosts are stale
   bool correct = all_ranks(execute<ghosts_match>(mesh, u(mesh), 1.0).get());
-  correct &= copies() == before + 1;               // the executor copied the ghosts once
-  execute<ghosts_match>(mesh, u(mesh), 1.0).get(); // still current: no second copy
+  correct &= copies() == before + 1;                // the executor copied the ghosts once
+  execute<ghosts_match>(mesh, u(mesh), 1.0).get();  // still current: no second copy
   correct &= copies() == before + 1;
-  execute<set_owned>(mesh, u(mesh), 2.0);          // owners change again: the next read copies
+  execute<set_owned>(mesh, u(mesh), 2.0);  // owners change again: the next read copies
   correct &= all_ranks(execute<ghosts_match>(mesh, u(mesh), 2.0).get());
   correct &= copies() == before + 2;
   correct &= mesh.ghost_size() == 2 && mesh.total_size() == mesh.owned_size() + 2;

@@ -6,10 +6,10 @@
 // direct sum over all particles.
 //
 //   mpirun -np 2 tutorial_5_ntree [--particles 3000]
+#include "flecsi_lite/topology/ntree.hh"
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/runtime.hh"
-#include "flecsi_lite/topology/ntree.hh"
 
 #include <mpi.h>
 
@@ -50,7 +50,8 @@ void create(std::uint64_t first, std::uint64_t total, double h, field<nt::point<
 }
 // Gather: the neighbours b of a are those with |x_a - x_b| < support * h_a (a itself included).
 void density_sum(const nt::neighbour_lists& lists, double support, field<nt::point<3>>::accessor<ro, ro> x,
-                 field<double>::accessor<ro, ro> m, field<double>::accessor<ro, ro> h, field<double>::accessor<wo> rho) {
+                 field<double>::accessor<ro, ro> m, field<double>::accessor<ro, ro> h,
+                 field<double>::accessor<wo> rho) {
   forall(rho.size(), [&](std::size_t a) {
     double sum = 0;
     for (std::size_t j = lists.offsets[a]; j < lists.offsets[a + 1]; ++j) {
@@ -68,7 +69,7 @@ void average(const nt::neighbour_lists& lists, field<double>::accessor<ro, ro> r
     mean(a) = sum / double(lists.count(a));
   });
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   runtime::options options("Tutorial 5: distribute particles, find neighbours, a density sum.");

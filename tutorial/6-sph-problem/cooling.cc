@@ -62,9 +62,12 @@ void create_lattice(cooling_run& s) {
 /// The new task: adds the cooling rate to du/dt, which "forces" has just computed (sph::ro and
 /// sph::rw say what it reads and writes; the executor orders it after forces by those privileges).
 void cool(problem gas, sph::ro<double> u, sph::rw<double> du_dt) {
-  forall(u.size(), [&](std::size_t a) { du_dt(a) -= (u(a) - gas.u_floor) / gas.cooling_time; }, "cooling");
+  forall(
+    u.size(), [&](std::size_t a) { du_dt(a) -= (u(a) - gas.u_floor) / gas.cooling_time; }, "cooling");
 }
-void cooling_action(cooling_run& s) { execute<cool>(s.gas, f::internal_energy(*s.particles), f::internal_energy_rate(*s.particles)); }
+void cooling_action(cooling_run& s) {
+  execute<cool>(s.gas, f::internal_energy(*s.particles), f::internal_energy_rate(*s.particles));
+}
 
 /// Largest |u - expected| over this rank's particles (reduced with max over the ranks).
 double largest_deviation(double expected, sph::ro<double> u) {
@@ -81,8 +84,8 @@ int check(const cooling_run& s) {
   const double expected = g.u_floor + (g.u0 - g.u_floor) * std::exp(-s.time / g.cooling_time);
   const double deviation =
     reduce<largest_deviation, reduction::max>(expected, f::internal_energy(*s.particles)).get() / (g.u0 - g.u_floor);
-  log::info() << "cooling: at t = " << s.time << " u = " << expected << " expected; largest deviation "
-              << deviation << " of u0 - u_floor, kinetic energy " << s.totals.kinetic;
+  log::info() << "cooling: at t = " << s.time << " u = " << expected << " expected; largest deviation " << deviation
+              << " of u0 - u_floor, kinetic energy " << s.totals.kinetic;
   return deviation < 1e-3 && s.totals.kinetic < 1e-20 ? 0 : 1;
 }
 
@@ -90,19 +93,19 @@ int run(const app::run_context& context) {
   cooling_run s;
   sph::configure(s, context);  // physics, run control, files
   s.gas = problem_parameters().read(context.parameters());
-  auto m = sph::make_app_control_model<cooling_run>(
-    {[](cooling_run& r) {
-       r.tree_settings.fixed_box = topology::ntree::box<D>{{0, 0}, {1, 1}};
-       r.tree_settings.periodic.fill(true);
-     },
-     create_lattice});
+  auto m =
+    sph::make_app_control_model<cooling_run>({[](cooling_run& r) {
+                                                r.tree_settings.fixed_box = topology::ntree::box<D>{{0, 0}, {1, 1}};
+                                                r.tree_settings.periodic.fill(true);
+                                              },
+                                              create_lattice});
   // One line each: the cooling rate joins du/dt right after the forces, before the kick uses it,
   // at the start (initialize) and in every step (advance).
   m.action("initialize", "cooling", cooling_action).after("forces");
   m.action("advance", "cooling", cooling_action).after("forces");
   return context.execute(m, s, check);
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   sph::app_definition definition;

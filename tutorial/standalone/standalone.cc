@@ -25,7 +25,7 @@ util::exact_sum kernel_sum(const narray& mesh, physics::kernel_type type, double
   });
   return sum;
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   runtime::options options("Standalone: the framework and the SPH kernels from an installed package.");

@@ -12,10 +12,9 @@
 
 namespace flecsi_lite::execution {
 struct ghost_traffic;
-} // namespace flecsi_lite::execution
+}  // namespace flecsi_lite::execution
 
 namespace flecsi_lite::execution::detail {
-
 
 /// The launch's start: packs and posts, counting messages and bytes in `traffic`; sets the
 /// launch's finish (unpack).
@@ -27,4 +26,4 @@ std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
 /// sent), written on rank 0 before the timer table.
 void report_ghost_traffic(const ghost_traffic& traffic, std::ostream& out);
 
-} // namespace flecsi_lite::execution::detail
+}  // namespace flecsi_lite::execution::detail

@@ -30,7 +30,7 @@ void check_readable_hdf5(const std::string& path, const std::string& kind) {
   if (is_hdf5 < 0) throw file_error("cannot read '" + path + "'" + hdf5_reason());
   if (const std::string crash = h5part::metadata_crash_check(path); !crash.empty()) throw file_error(crash);
 }
-} // namespace
+}  // namespace
 
 hdf5_handle open_for_reading_collectively(const std::string& path, MPI_Comm comm, const std::string& kind) {
   agree(comm, [&] {
@@ -40,8 +40,8 @@ hdf5_handle open_for_reading_collectively(const std::string& path, MPI_Comm comm
   auto file = file_handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()));
   std::optional<failure_record> failed;
   if (!file)
-    failed = failure_record{failure::file,
-                            "'" + path + "' is truncated or corrupted: HDF5 cannot open it" + hdf5_reason()};
+    failed =
+      failure_record{failure::file, "'" + path + "' is truncated or corrupted: HDF5 cannot open it" + hdf5_reason()};
   try {
     raise_if_any(comm, failed);
   } catch (...) {
@@ -51,4 +51,4 @@ hdf5_handle open_for_reading_collectively(const std::string& path, MPI_Comm comm
   return file;
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

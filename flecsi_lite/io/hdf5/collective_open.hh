@@ -17,4 +17,4 @@ namespace flecsi_lite::io {
 /// `kind` names what the file should be in the messages ("an H5Part file").
 hdf5_handle open_for_reading_collectively(const std::string& path, MPI_Comm comm, const std::string& kind);
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -13,17 +13,14 @@ namespace flecsi_lite::io::h5part {
 inline constexpr std::string_view step_prefix = "Step#";
 
 /// "Step#<index>".
-inline std::string step_group_name(std::int64_t index) {
-  return std::string(step_prefix) + std::to_string(index);
-}
+inline std::string step_group_name(std::int64_t index) { return std::string(step_prefix) + std::to_string(index); }
 
 /// The index of a step group name: "Step#12" -> 12. Empty for other names, for negative or
 /// signed numbers and for leading zeros ("Step#01"), which H5Part never writes.
 inline std::optional<std::int64_t> parse_step_group_name(std::string_view name) {
   if (name.substr(0, step_prefix.size()) != step_prefix) return std::nullopt;
   const std::string_view digits = name.substr(step_prefix.size());
-  if (digits.empty() || digits.size() > 18 || (digits.size() > 1 && digits[0] == '0'))
-    return std::nullopt;
+  if (digits.empty() || digits.size() > 18 || (digits.size() > 1 && digits[0] == '0')) return std::nullopt;
   std::int64_t index = 0;
   for (char c : digits) {
     if (c < '0' || c > '9') return std::nullopt;
@@ -44,6 +41,6 @@ inline constexpr const char* num_steps = "NumSteps";
 inline constexpr const char* program = "program";
 inline constexpr const char* parameters = "parameters";
 inline constexpr const char* dimension = "dimension";
-} // namespace attribute
+}  // namespace attribute
 
-} // namespace flecsi_lite::io::h5part
+}  // namespace flecsi_lite::io::h5part

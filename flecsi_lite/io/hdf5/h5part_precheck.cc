@@ -34,7 +34,8 @@ void walk_dataset(hid_t dataset) {
   auto space = dataspace_handle(H5Dget_space(dataset));
   if (space) {
     hsize_t extent[H5S_MAX_RANK];
-    if (H5Sget_simple_extent_ndims(space.get()) <= H5S_MAX_RANK) H5Sget_simple_extent_dims(space.get(), extent, nullptr);
+    if (H5Sget_simple_extent_ndims(space.get()) <= H5S_MAX_RANK)
+      H5Sget_simple_extent_dims(space.get(), extent, nullptr);
   }
   auto type = datatype_handle(H5Dget_type(dataset));
   if (type) H5Tget_size(type.get()), H5Tget_class(type.get());
@@ -62,7 +63,7 @@ void walk(hid_t group, int depth) {
     if (kind == H5I_DATASET) walk_dataset(object.get());
   }
 }
-} // namespace
+}  // namespace
 
 std::string metadata_crash_check(const std::string& path, double seconds) {
   const pid_t child = fork();
@@ -101,4 +102,4 @@ std::string metadata_crash_check(const std::string& path, double seconds) {
   return "";
 }
 
-} // namespace flecsi_lite::io::h5part
+}  // namespace flecsi_lite::io::h5part

@@ -16,4 +16,4 @@ namespace flecsi_lite::io::h5part {
 /// within `seconds`.
 std::string metadata_crash_check(const std::string& path, double seconds = 120);
 
-} // namespace flecsi_lite::io::h5part
+}  // namespace flecsi_lite::io::h5part

@@ -11,11 +11,10 @@ namespace flecsi_lite::io::h5part {
 
 namespace {
 herr_t collect_step(hid_t, const char* name, const H5L_info_t*, void* steps) {
-  if (const auto index = parse_step_group_name(name))
-    static_cast<std::vector<std::int64_t>*>(steps)->push_back(*index);
+  if (const auto index = parse_step_group_name(name)) static_cast<std::vector<std::int64_t>*>(steps)->push_back(*index);
   return 0;
 }
-} // namespace
+}  // namespace
 
 std::vector<std::int64_t> step_indices(hid_t file) {
   std::vector<std::int64_t> steps;
@@ -26,4 +25,4 @@ std::vector<std::int64_t> step_indices(hid_t file) {
   return steps;
 }
 
-} // namespace flecsi_lite::io::h5part
+}  // namespace flecsi_lite::io::h5part

@@ -12,4 +12,4 @@ namespace flecsi_lite::io::h5part {
 /// Sorted step indices; other root objects are ignored. Throws io_error when HDF5 fails.
 std::vector<std::int64_t> step_indices(hid_t file);
 
-} // namespace flecsi_lite::io::h5part
+}  // namespace flecsi_lite::io::h5part

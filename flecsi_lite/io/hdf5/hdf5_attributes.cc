@@ -11,10 +11,8 @@
 namespace flecsi_lite::io {
 
 namespace {
-[[noreturn]] void fail(const std::string& message) {
-  throw io_error(failure::system, message + hdf5_reason());
-}
-} // namespace
+[[noreturn]] void fail(const std::string& message) { throw io_error(failure::system, message + hdf5_reason()); }
+}  // namespace
 
 void write_attribute(hid_t location, const std::string& name, const attribute_value& value) {
   if (has_attribute(location, name) && H5Adelete(location, name.c_str()) < 0)
@@ -30,15 +28,12 @@ void write_attribute(hid_t location, const std::string& name, const attribute_va
   } else {
     const std::string& text = std::get<std::string>(value);
     type = datatype_handle(H5Tcopy(H5T_C_S1));
-    if (!type || H5Tset_size(type.get(), text.size() + 1) < 0 ||
-        H5Tset_strpad(type.get(), H5T_STR_NULLTERM) < 0)
+    if (!type || H5Tset_size(type.get(), text.size() + 1) < 0 || H5Tset_strpad(type.get(), H5T_STR_NULLTERM) < 0)
       fail("cannot make a string type for attribute '" + name + "'");
     stored = in_memory = type.get(), data = text.c_str();
   }
-  auto attribute = attribute_handle(
-    H5Acreate2(location, name.c_str(), stored, space.get(), H5P_DEFAULT, H5P_DEFAULT));
-  if (!attribute || H5Awrite(attribute.get(), in_memory, data) < 0)
-    fail("cannot write attribute '" + name + "'");
+  auto attribute = attribute_handle(H5Acreate2(location, name.c_str(), stored, space.get(), H5P_DEFAULT, H5P_DEFAULT));
+  if (!attribute || H5Awrite(attribute.get(), in_memory, data) < 0) fail("cannot write attribute '" + name + "'");
 }
 
 attribute_value read_attribute(hid_t location, const std::string& name, const std::string& what) {
@@ -48,8 +43,7 @@ attribute_value read_attribute(hid_t location, const std::string& name, const st
   auto type = datatype_handle(H5Aget_type(attribute.get()));
   if (!space || !type) fail("cannot inspect " + what);
   if (H5Sget_simple_extent_npoints(space.get()) != 1)
-    throw element_type_error(what + " holds " +
-                             std::to_string(H5Sget_simple_extent_npoints(space.get())) +
+    throw element_type_error(what + " holds " + std::to_string(H5Sget_simple_extent_npoints(space.get())) +
                              " values; only single values are read");
   switch (H5Tget_class(type.get())) {
     case H5T_INTEGER: {
@@ -87,16 +81,14 @@ attribute_value read_attribute(hid_t location, const std::string& name, const st
   }
 }
 
-bool has_attribute(hid_t location, const std::string& name) {
-  return H5Aexists(location, name.c_str()) > 0;
-}
+bool has_attribute(hid_t location, const std::string& name) { return H5Aexists(location, name.c_str()) > 0; }
 
 namespace {
 herr_t collect_name(hid_t, const char* name, const H5A_info_t*, void* names) {
   static_cast<std::vector<std::string>*>(names)->emplace_back(name);
   return 0;
 }
-} // namespace
+}  // namespace
 
 std::vector<std::string> attribute_names(hid_t location) {
   std::vector<std::string> names;
@@ -106,4 +98,4 @@ std::vector<std::string> attribute_names(hid_t location) {
   return names;
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

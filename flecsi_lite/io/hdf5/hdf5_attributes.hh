@@ -26,4 +26,4 @@ bool has_attribute(hid_t location, const std::string& name);
 /// The names of the attributes of `location`, in HDF5's name order.
 std::vector<std::string> attribute_names(hid_t location);
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

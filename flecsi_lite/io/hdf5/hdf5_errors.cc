@@ -8,9 +8,7 @@ hdf5_quiet_scope::hdf5_quiet_scope() {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
 }
 
-hdf5_quiet_scope::~hdf5_quiet_scope() {
-  H5Eset_auto2(H5E_DEFAULT, previous_function_, previous_data_);
-}
+hdf5_quiet_scope::~hdf5_quiet_scope() { H5Eset_auto2(H5E_DEFAULT, previous_function_, previous_data_); }
 
 namespace {
 // Walking downward visits the API call first and the lowest-level cause last.
@@ -18,7 +16,7 @@ herr_t keep_last_description(unsigned, const H5E_error2_t* error, void* client) 
   if (error->desc && *error->desc) *static_cast<std::string*>(client) = error->desc;
   return 0;
 }
-} // namespace
+}  // namespace
 
 std::string hdf5_error_detail() {
   std::string detail;
@@ -31,4 +29,4 @@ std::string hdf5_reason() {
   return detail.empty() ? std::string() : " (HDF5: " + detail + ")";
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

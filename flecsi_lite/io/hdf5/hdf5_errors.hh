@@ -11,13 +11,13 @@ namespace flecsi_lite::io {
 /// Turns off HDF5's automatic printing of its error stack for the lifetime of the object and
 /// restores the previous handler afterwards.
 class hdf5_quiet_scope {
-public:
+ public:
   hdf5_quiet_scope();
   hdf5_quiet_scope(const hdf5_quiet_scope&) = delete;
   hdf5_quiet_scope& operator=(const hdf5_quiet_scope&) = delete;
   ~hdf5_quiet_scope();
 
-private:
+ private:
   H5E_auto2_t previous_function_ = nullptr;
   void* previous_data_ = nullptr;
 };
@@ -29,4 +29,4 @@ std::string hdf5_error_detail();
 /// " (HDF5: <detail>)", or "" when HDF5 recorded nothing: appended to our own messages.
 std::string hdf5_reason();
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

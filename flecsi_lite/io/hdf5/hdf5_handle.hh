@@ -9,7 +9,7 @@
 namespace flecsi_lite::io {
 
 class hdf5_handle {
-public:
+ public:
   using closer = herr_t (*)(hid_t);
 
   hdf5_handle() = default;
@@ -17,8 +17,7 @@ public:
   hdf5_handle(hid_t id, closer close_function) : id_(id), close_(close_function) {}
   hdf5_handle(const hdf5_handle&) = delete;
   hdf5_handle& operator=(const hdf5_handle&) = delete;
-  hdf5_handle(hdf5_handle&& other) noexcept
-    : id_(std::exchange(other.id_, H5I_INVALID_HID)), close_(other.close_) {}
+  hdf5_handle(hdf5_handle&& other) noexcept : id_(std::exchange(other.id_, H5I_INVALID_HID)), close_(other.close_) {}
   hdf5_handle& operator=(hdf5_handle&& other) noexcept {
     if (this != &other) {
       reset();
@@ -45,7 +44,7 @@ public:
   /// Gives up ownership without closing (used when a collective close cannot be made safely).
   hid_t release() { return std::exchange(id_, H5I_INVALID_HID); }
 
-private:
+ private:
   hid_t id_ = H5I_INVALID_HID;
   closer close_ = nullptr;
 };
@@ -59,4 +58,4 @@ inline hdf5_handle datatype_handle(hid_t id) { return {id, H5Tclose}; }
 inline hdf5_handle property_list_handle(hid_t id) { return {id, H5Pclose}; }
 inline hdf5_handle object_handle(hid_t id) { return {id, H5Oclose}; }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -22,4 +22,4 @@ hdf5_handle collective_transfer() {
   return transfer;
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -16,4 +16,4 @@ hdf5_handle mpio_file_access(MPI_Comm comm);
 /// Data transfer: collective MPI-IO (H5FD_MPIO_COLLECTIVE).
 hdf5_handle collective_transfer();
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -15,8 +15,8 @@ std::uint64_t storable_elements(hid_t dataset, std::uint64_t element_size, std::
   const bool filtered = !creation || H5Pget_nfilters(creation.get()) != 0;
   if (filtered)
     bytes = file_size > std::numeric_limits<std::uint64_t>::max() / largest_compression_ratio
-      ? std::numeric_limits<std::uint64_t>::max()
-      : file_size * largest_compression_ratio;
+              ? std::numeric_limits<std::uint64_t>::max()
+              : file_size * largest_compression_ratio;
   return bytes / element_size;
 }
 
@@ -27,4 +27,4 @@ std::uint64_t file_size_of(hid_t location) {
   return size;
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

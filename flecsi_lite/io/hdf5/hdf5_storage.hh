@@ -21,4 +21,4 @@ std::uint64_t storable_elements(hid_t dataset, std::uint64_t element_size, std::
 /// The size in bytes of the file that holds `location` (any object of it); 0 when unknown (then no bound applies).
 std::uint64_t file_size_of(hid_t location);
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -11,8 +11,7 @@
 
 namespace flecsi_lite::io {
 
-void raise_marking_storage_failure(MPI_Comm comm, const std::optional<failure_record>& failed,
-                                   bool& storage_failed) {
+void raise_marking_storage_failure(MPI_Comm comm, const std::optional<failure_record>& failed, bool& storage_failed) {
   try {
     raise_if_any(comm, failed);
   } catch (...) {
@@ -21,16 +20,14 @@ void raise_marking_storage_failure(MPI_Comm comm, const std::optional<failure_re
   }
 }
 
-void finish_partial_file(MPI_Comm comm, hdf5_handle& file, const std::string& partial,
-                         bool& storage_failed) {
+void finish_partial_file(MPI_Comm comm, hdf5_handle& file, const std::string& partial, bool& storage_failed) {
   hdf5_quiet_scope quiet;
   // Everything on disk before the close, so that a failure leaves the file open.
   std::optional<failure_record> failed;
   if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0)
     failed = failure_record{failure::file, "cannot flush '" + partial + "'" + hdf5_reason()};
   raise_marking_storage_failure(comm, failed, storage_failed);
-  if (file.close() < 0)
-    failed = failure_record{failure::file, "cannot close '" + partial + "'" + hdf5_reason()};
+  if (file.close() < 0) failed = failure_record{failure::file, "cannot close '" + partial + "'" + hdf5_reason()};
   raise_if_any(comm, failed);
 }
 
@@ -46,14 +43,12 @@ void rename_partial_file(MPI_Comm comm, const std::string& partial, const std::s
       failed = failure_record{e.kind(), e.what()};
     }
     if (error)
-      failed = failure_record{failure::file,
-                              "cannot rename '" + partial + "' to '" + path + "': " + error.message()};
+      failed = failure_record{failure::file, "cannot rename '" + partial + "' to '" + path + "': " + error.message()};
   }
   raise_if_any(comm, failed);  // also keeps every rank here until the rename is done
 }
 
-bool close_unfinished_file(MPI_Comm comm, hdf5_handle& file, const std::string& partial,
-                           bool storage_failed) {
+bool close_unfinished_file(MPI_Comm comm, hdf5_handle& file, const std::string& partial, bool storage_failed) {
   hdf5_quiet_scope quiet;
   int flushed = 0;
   if (!storage_failed) {
@@ -69,4 +64,4 @@ bool close_unfinished_file(MPI_Comm comm, hdf5_handle& file, const std::string& 
   return flushed;
 }
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -15,13 +15,11 @@ namespace flecsi_lite::io {
 
 /// Collective: raise_if_any, and when any rank failed, sets `storage_failed` on every rank (a
 /// failed data write or flush: afterwards the file is only emptied and closed, see below).
-void raise_marking_storage_failure(MPI_Comm comm, const std::optional<failure_record>& failed,
-                                   bool& storage_failed);
+void raise_marking_storage_failure(MPI_Comm comm, const std::optional<failure_record>& failed, bool& storage_failed);
 
 /// Collective: flushes and closes the complete `file` (`partial` is its path); a failed flush
 /// marks `storage_failed` and leaves the file open for close_unfinished_file.
-void finish_partial_file(MPI_Comm comm, hdf5_handle& file, const std::string& partial,
-                         bool& storage_failed);
+void finish_partial_file(MPI_Comm comm, hdf5_handle& file, const std::string& partial, bool& storage_failed);
 
 /// Collective: renames `partial` to `path` on rank 0, refused when `path` has become something
 /// else than a regular file; every rank returns once the rename is done.
@@ -37,7 +35,6 @@ void rename_partial_file(MPI_Comm comm, const std::string& partial, const std::s
 /// skips the sync point's broadcast there and leaves the other ranks waiting in it for ever.
 /// Emptying the file gives back the space the close needs. (libhdf5 1.10 may still print
 /// "infinite loop closing library" at exit: blocks its failed flush leaked; the exit is clean.)
-bool close_unfinished_file(MPI_Comm comm, hdf5_handle& file, const std::string& partial,
-                           bool storage_failed);
+bool close_unfinished_file(MPI_Comm comm, hdf5_handle& file, const std::string& partial, bool storage_failed);
 
-} // namespace flecsi_lite::io
+}  // namespace flecsi_lite::io

@@ -40,4 +40,4 @@ std::optional<std::vector<double>> parse_real_list(const std::string& text, std:
 /// The shortest text that reads back as exactly `value` (std::to_chars without a format).
 std::string shortest_real(double value);
 
-} // namespace flecsi_lite::runtime::detail
+}  // namespace flecsi_lite::runtime::detail

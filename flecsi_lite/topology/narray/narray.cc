@@ -11,18 +11,17 @@ namespace {
 std::size_t block_begin(std::size_t n, int rank, int size) {
   return n * static_cast<std::size_t>(rank) / static_cast<std::size_t>(size);
 }
-} // namespace
+}  // namespace
 
 narray::narray(std::size_t global_size, std::size_t halo, bool periodic)
-  : global_size_(global_size), halo_(halo), periodic_(periodic) {
+    : global_size_(global_size), halo_(halo), periodic_(periodic) {
   const int rank = runtime::rank(), size = runtime::size();
   first_ = block_begin(global_size, rank, size);
   const std::size_t owned = block_begin(global_size, rank + 1, size) - first_;
   for (int r = 0; r < size; ++r)
     if (block_begin(global_size, r + 1, size) - block_begin(global_size, r, size) < halo)
-      throw std::invalid_argument("narray: " + std::to_string(global_size) + " entities over " +
-                                  std::to_string(size) + " ranks leave a block smaller than the halo of " +
-                                  std::to_string(halo));
+      throw std::invalid_argument("narray: " + std::to_string(global_size) + " entities over " + std::to_string(size) +
+                                  " ranks leave a block smaller than the halo of " + std::to_string(halo));
   left_ghosts_ = (periodic || rank > 0) ? halo : 0;
   right_ghosts_ = (periodic || rank + 1 < size) ? halo : 0;
   set_sizes(owned, left_ghosts_ + right_ghosts_);
@@ -36,8 +35,8 @@ narray::narray(std::size_t global_size, std::size_t halo, bool periodic)
     ids.push_back(global_index(owned + g));
   }
   const std::size_t first = first_;
-  set_plan(data::build_ghost_plan(owners, ids, [first](std::uint64_t id) { return std::size_t(id - first); },
-                                  runtime::communicator()));
+  set_plan(data::build_ghost_plan(
+    owners, ids, [first](std::uint64_t id) { return std::size_t(id - first); }, runtime::communicator()));
 }
 
 std::size_t narray::global_index(std::size_t local) const {
@@ -60,4 +59,4 @@ std::size_t narray::neighbor(std::size_t i, long offset) const {
   return owned_size() + left_ghosts_ + static_cast<std::size_t>(target - owned);
 }
 
-} // namespace flecsi_lite::topology
+}  // namespace flecsi_lite::topology

@@ -11,7 +11,7 @@
 namespace flecsi_lite::topology {
 
 class narray : public data::topology_base {
-public:
+ public:
   /// Collective. Throws std::invalid_argument when a rank's block is smaller than the halo.
   narray(std::size_t global_size, std::size_t halo, bool periodic);
 
@@ -27,10 +27,10 @@ public:
   std::size_t neighbor(std::size_t i, long offset) const;
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
-private:
+ private:
   std::size_t global_size_, halo_, first_ = 0;
   std::size_t left_ghosts_ = 0, right_ghosts_ = 0;
   bool periodic_;
 };
 
-} // namespace flecsi_lite::topology
+}  // namespace flecsi_lite::topology

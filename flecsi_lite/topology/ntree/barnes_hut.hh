@@ -3,8 +3,8 @@
 // must be summed directly, for a target point or a group of targets in a box.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
+#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
 #include <cassert>
@@ -39,8 +39,7 @@ inline bool barnes_hut_accepts(const tree_node<D>& node, const box<D>& targets, 
 /// Fills `out` with the interaction list of the targets in box `targets` (a point is a box
 /// with lo = hi): accepted nodes are not opened, rejected leaves give their particles.
 template<int D>
-void barnes_hut_walk(const hashed_tree<D>& tree, const box<D>& targets, double theta,
-                     interaction_list& out) {
+void barnes_hut_walk(const hashed_tree<D>& tree, const box<D>& targets, double theta, interaction_list& out) {
   assert(theta >= 0);
   out.clear();
   if (tree.size() == 0) return;
@@ -65,9 +64,8 @@ void barnes_hut_walk(const hashed_tree<D>& tree, const box<D>& targets, double t
 
 /// The interaction list of a single target point.
 template<int D>
-void barnes_hut_walk(const hashed_tree<D>& tree, const point<D>& target, double theta,
-                     interaction_list& out) {
+void barnes_hut_walk(const hashed_tree<D>& tree, const point<D>& target, double theta, interaction_list& out) {
   barnes_hut_walk<D>(tree, box<D>{target, target}, theta, out);
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

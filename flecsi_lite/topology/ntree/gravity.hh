@@ -27,7 +27,7 @@ struct gravity_options {
   /// its guard (the group's box outside the node's cube widened by 0.1 side per face). Where a
   /// group's old accelerations are unknown (acceleration_min = 0) theta decides instead.
   bool relative_criterion = false;
-  double relative_tolerance = 0.0025; ///< its alpha
+  double relative_tolerance = 0.0025;  ///< its alpha
   /// A node whose bounds come within near_factor * max(node h_max, group h_max) of the group's
   /// box is always opened, so a softened pair is never replaced by a multipole.
   double near_factor = 2;
@@ -42,10 +42,10 @@ template<int D>
 struct gravity_sources {
   const tree_node<D>* nodes = nullptr;
   std::size_t node_count = 0;
-  const quadrupole<D>* quadrupoles = nullptr; ///< per node; nullptr: monopole only
+  const quadrupole<D>* quadrupoles = nullptr;  ///< per node; nullptr: monopole only
   const point<D>* x = nullptr;
   const double* m = nullptr;
-  const double* h = nullptr; ///< nullptr: all zero
+  const double* h = nullptr;  ///< nullptr: all zero
 };
 
 /// The sources view of a hashed tree (its quadrupoles when it computed them).
@@ -68,7 +68,7 @@ template<int D>
 struct target_group {
   box<D> bounds = box<D>::empty();
   double h_max = 0;
-  double acceleration_min = 0; ///< smallest |a_old| (relative criterion only; 0: unknown)
+  double acceleration_min = 0;  ///< smallest |a_old| (relative criterion only; 0: unknown)
   std::uint32_t begin = 0, end = 0;
 };
 
@@ -82,9 +82,7 @@ std::vector<target_group<D>> target_groups(const hashed_tree<D>& tree, std::size
   std::vector<target_group<D>> groups;
   if (tree.size() == 0) return groups;
   const auto& nodes = tree.nodes();
-  const auto is_group = [&](const tree_node<D>& node) {
-    return node.size() <= group_size || node.is_leaf();
-  };
+  const auto is_group = [&](const tree_node<D>& node) { return node.size() <= group_size || node.is_leaf(); };
   const auto add = [&](const tree_node<D>& node) {
     target_group<D> group;
     group.bounds = node.bounds;
@@ -152,37 +150,39 @@ struct gravity_counts {
 /// Groups run in parallel (dynamic schedule), each thread with its own interaction list.
 /// acceleration and potential (nullable) are indexed like the targets.
 template<int D, class Near>
-gravity_counts gravity_walk(const gravity_sources<D>& sources,
-                            const std::vector<target_group<D>>& groups,
-                            const gravity_targets<D>& targets, const gravity_options& options,
-                            const Near& near, point<D>* acceleration, double* potential) {
+gravity_counts gravity_walk(const gravity_sources<D>& sources, const std::vector<target_group<D>>& groups,
+                            const gravity_targets<D>& targets, const gravity_options& options, const Near& near,
+                            point<D>* acceleration, double* potential) {
   std::atomic<std::uint64_t> node_interactions{0}, particle_interactions{0};
   const quadrupole<D>* quadrupoles = options.quadrupole ? sources.quadrupoles : nullptr;
-  flecsi_lite::forall(groups.size(), [&](std::size_t g) {
-    // One list and one block per thread, kept between walks: no allocation once warm.
-    thread_local detail::gravity_list<D> list;
-    thread_local detail::target_block<D> block;
-    const target_group<D>& group = groups[g];
-    detail::build_gravity_list<D>(sources, group, options, quadrupoles, list);
-    constexpr std::uint32_t width = detail::target_block<D>::width;
-    for (std::uint32_t first = group.begin; first < group.end; first += width) {
-      block.count = std::min(width, group.end - first);
-      for (std::uint32_t t = 0; t < block.count; ++t) {
-        for (int k = 0; k < D; ++k) block.x[k][t] = targets.x[first + t][k];
-        block.h[t] = targets.h ? targets.h[first + t] : 0.0;
+  flecsi_lite::forall(
+    groups.size(),
+    [&](std::size_t g) {
+      // One list and one block per thread, kept between walks: no allocation once warm.
+      thread_local detail::gravity_list<D> list;
+      thread_local detail::target_block<D> block;
+      const target_group<D>& group = groups[g];
+      detail::build_gravity_list<D>(sources, group, options, quadrupoles, list);
+      constexpr std::uint32_t width = detail::target_block<D>::width;
+      for (std::uint32_t first = group.begin; first < group.end; first += width) {
+        block.count = std::min(width, group.end - first);
+        for (std::uint32_t t = 0; t < block.count; ++t) {
+          for (int k = 0; k < D; ++k) block.x[k][t] = targets.x[first + t][k];
+          block.h[t] = targets.h ? targets.h[first + t] : 0.0;
+        }
+        detail::sum_gravity_list<D>(list, options.near_factor, near, block);
+        for (std::uint32_t t = 0; t < block.count; ++t) {
+          if (acceleration)
+            for (int k = 0; k < D; ++k) acceleration[first + t][k] = block.a[k][t];
+          if (potential) potential[first + t] = block.phi[t];
+        }
       }
-      detail::sum_gravity_list<D>(list, options.near_factor, near, block);
-      for (std::uint32_t t = 0; t < block.count; ++t) {
-        if (acceleration)
-          for (int k = 0; k < D; ++k) acceleration[first + t][k] = block.a[k][t];
-        if (potential) potential[first + t] = block.phi[t];
-      }
-    }
-    const std::uint64_t count = group.end - group.begin;
-    node_interactions.fetch_add(count * list.nodes.size(), std::memory_order_relaxed);
-    particle_interactions.fetch_add(count * list.particles(), std::memory_order_relaxed);
-  }, "ntree::gravity_walk", flecsi_lite::dynamic_schedule{});
+      const std::uint64_t count = group.end - group.begin;
+      node_interactions.fetch_add(count * list.nodes.size(), std::memory_order_relaxed);
+      particle_interactions.fetch_add(count * list.particles(), std::memory_order_relaxed);
+    },
+    "ntree::gravity_walk", flecsi_lite::dynamic_schedule{});
   return {node_interactions.load(), particle_interactions.load()};
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

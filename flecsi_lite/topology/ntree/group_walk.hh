@@ -4,13 +4,13 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/detail/list_filter.hh"
 #include "flecsi_lite/topology/ntree/detail/neighbour_list_builder.hh"
+#include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
+#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 #include "flecsi_lite/topology/ntree/radius_search.hh"
-#include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
 
 #include <algorithm>
 #include <array>
@@ -45,9 +45,8 @@ struct group_options {
 /// object must not be used by two threads at once.
 template<int D>
 class group_walk {
-public:
-  explicit group_walk(search_options search = {}, group_options groups = {})
-    : search_(search), grouping_(groups) {}
+ public:
+  explicit group_walk(search_options search = {}, group_options groups = {}) : search_(search), grouping_(groups) {}
 
   const search_options& options() const { return search_; }
   const group_options& grouping() const { return grouping_; }
@@ -58,20 +57,21 @@ public:
   void for_each_neighbour(const hashed_tree<D>& tree, const domain<D>& space, F&& apply) {
     check_functor<D, std::remove_reference_t<F>>(space);
     const auto shifts = space.shift_table();
-    run(tree, space, [](std::size_t) {},
-        [&](std::size_t, workspace& work, auto kind, auto periodic) {
-          walk_group<decltype(kind)::value, decltype(periodic)::value>(
-            tree, shifts, space.allowed_shifts(), work,
-            [&](std::size_t a, std::size_t count, const auto& neighbour, const auto& shift) {
-              for (std::size_t i = 0; i < count; ++i) call_apply<D>(apply, a, neighbour(i), shift(i), shifts);
-            });
-        });
+    run(
+      tree, space, [](std::size_t) {},
+      [&](std::size_t, workspace& work, auto kind, auto periodic) {
+        walk_group<decltype(kind)::value, decltype(periodic)::value>(
+          tree, shifts, space.allowed_shifts(), work,
+          [&](std::size_t a, std::size_t count, const auto& neighbour, const auto& shift) {
+            for (std::size_t i = 0; i < count; ++i) call_apply<D>(apply, a, neighbour(i), shift(i), shifts);
+          });
+      });
   }
 
   /// Neighbour lists of all targets, written as `layout` says (by default: one row per
   /// particle, tree indices, separate shift codes when the domain is periodic).
-  void find_neighbours(const hashed_tree<D>& tree, const domain<D>& space,
-                       neighbour_lists& out, const list_layout& layout = {}) {
+  void find_neighbours(const hashed_tree<D>& tree, const domain<D>& space, neighbour_lists& out,
+                       const list_layout& layout = {}) {
     const auto kind = neighbour_list_builder::entries_for(layout, space.any_periodic(), tree.size());
     const std::size_t* rename = layout.rename;
     const auto shifts = space.shift_table();
@@ -79,15 +79,14 @@ public:
       builder_.start(rename ? layout.rows : tree.size(), chunks, out, kind);
     };
     do {  // twice when a chunk outgrew its region (neighbour_list_builder)
-      run(tree, space, prepare,
-          [&](std::size_t chunk, workspace& work, auto interaction_kind, auto periodic) {
-            auto& part = builder_[chunk];
-            walk_group<decltype(interaction_kind)::value, decltype(periodic)::value>(
-              tree, shifts, space.allowed_shifts(), work,
-              [&](std::size_t a, std::size_t count, const auto& neighbour, const auto& shift) {
-                part.append(rename ? rename[a] : a, count, neighbour, shift, rename, kind);
-              });
+      run(tree, space, prepare, [&](std::size_t chunk, workspace& work, auto interaction_kind, auto periodic) {
+        auto& part = builder_[chunk];
+        walk_group<decltype(interaction_kind)::value, decltype(periodic)::value>(
+          tree, shifts, space.allowed_shifts(), work,
+          [&](std::size_t a, std::size_t count, const auto& neighbour, const auto& shift) {
+            part.append(rename ? rename[a] : a, count, neighbour, shift, rename, kind);
           });
+      });
     } while (!builder_.finish(out, kind));
   }
 
@@ -111,22 +110,22 @@ public:
     return total;
   }
 
-private:
+ private:
   // The interaction list lives in the first `length` entries of the arrays, which only grow
   // (geometrically), so that entries can be written before knowing whether they are kept.
   struct workspace {
-    std::size_t group = 0;   // index in groups_ being walked
-    std::size_t entries = 0; // interaction-list entries built by this workspace
-    std::size_t length = 0;  // entries of the current list
+    std::size_t group = 0;    // index in groups_ being walked
+    std::size_t entries = 0;  // interaction-list entries built by this workspace
+    std::size_t length = 0;   // entries of the current list
     std::vector<std::uint32_t> index;
     std::vector<shift_code> shift;
     std::array<std::vector<double>, D> position;
     std::vector<double> reach_squared;  // (support h_b)^2 of each source (symmetric searches)
-    std::vector<std::uint32_t> hits; // per-target scratch: list entries that are neighbours
+    std::vector<std::uint32_t> hits;    // per-target scratch: list entries that are neighbours
 
     std::size_t bytes() const {
-      return index.capacity() * (sizeof(std::uint32_t) + sizeof(shift_code) + (D + 1) * sizeof(double) +
-                                 sizeof(std::uint32_t));
+      return index.capacity() *
+             (sizeof(std::uint32_t) + sizeof(shift_code) + (D + 1) * sizeof(double) + sizeof(std::uint32_t));
     }
 
     void reserve(std::size_t size) {
@@ -153,13 +152,16 @@ private:
     prepare(chunks);
     if (group_count == 0) return;
     dispatch_search(search_.kind, space.any_periodic(), [&](auto kind, auto periodic) {
-      flecsi_lite::forall(chunks, [&](std::size_t c) {
-        workspace& work = workspaces_[c];
-        for (std::size_t g = group_count * c / chunks; g < group_count * (c + 1) / chunks; ++g) {
-          work.group = g;
-          body(c, work, kind, periodic);
-        }
-      }, "ntree::group_walk", flecsi_lite::dynamic_schedule{});
+      flecsi_lite::forall(
+        chunks,
+        [&](std::size_t c) {
+          workspace& work = workspaces_[c];
+          for (std::size_t g = group_count * c / chunks; g < group_count * (c + 1) / chunks; ++g) {
+            work.group = g;
+            body(c, work, kind, periodic);
+          }
+        },
+        "ntree::group_walk", flecsi_lite::dynamic_schedule{});
     });
   }
 
@@ -175,15 +177,13 @@ private:
       const tree_node<D>& node = tree.node(index);
       const bool small = node.size() <= grouping_.max_group_size ||
                          (grouping_.max_group_mass > 0 && node.mass <= grouping_.max_group_mass);
-      const bool compact =
-        grouping_.max_group_extent <= 0 ||
-        node.bounds.max_extent() <= grouping_.max_group_extent * search_.support * node.h_max;
+      const bool compact = grouping_.max_group_extent <= 0 ||
+                           node.bounds.max_extent() <= grouping_.max_group_extent * search_.support * node.h_max;
       if (node.is_leaf() || (small && compact)) {
         groups_.push_back(index);
         continue;
       }
-      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;)
-        stack.push_back(c);
+      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) stack.push_back(c);
     }
   }
 
@@ -191,8 +191,7 @@ private:
   // emit(a, count, neighbour, shift) once for every target a of the group, whose neighbours
   // are neighbour(i) under shift code shift(i), i < count, in ascending neighbour order.
   template<interaction Kind, bool Periodic, class Emit>
-  void walk_group(const hashed_tree<D>& tree,
-                  const std::array<point<D>, shift_code_count<D>>& shifts,
+  void walk_group(const hashed_tree<D>& tree, const std::array<point<D>, shift_code_count<D>>& shifts,
                   std::uint32_t allowed, workspace& work, Emit&& emit) const {
     const tree_node<D>& group = tree.node(groups_[work.group]);
     const point<D>* positions = tree.positions();
@@ -214,8 +213,8 @@ private:
         if (!search_.is_target(a)) continue;
         walk_target<D, Kind, Periodic>(tree, shifts, allowed, positions[a], h[a], support,
                                        [&](std::size_t b, shift_code c) {
-                                         emit(a, 1, [b](std::size_t) { return b; },
-                                              [c](std::size_t) { return c; });
+                                         emit(
+                                           a, 1, [b](std::size_t) { return b; }, [c](std::size_t) { return c; });
                                        });
       }
       return;
@@ -235,8 +234,9 @@ private:
       const std::size_t count =
         within_reach<D>(positions[a], source_x, length, radius * radius,
                         Kind == interaction::symmetric ? work.reach_squared.data() : nullptr, hits);
-      emit(a, count, [index, hits](std::size_t i) { return index[hits[i]]; },
-           [code, hits](std::size_t i) { return Periodic ? code[hits[i]] : zero_shift<D>; });
+      emit(
+        a, count, [index, hits](std::size_t i) { return index[hits[i]]; },
+        [code, hits](std::size_t i) { return Periodic ? code[hits[i]] : zero_shift<D>; });
     }
   }
 
@@ -244,10 +244,8 @@ private:
   // under some image shift, is within reach of the targets' box; leaves add their particles
   // that are themselves within reach of that box. Children are tested before being pushed.
   template<interaction Kind, bool Periodic>
-  void build_list(const hashed_tree<D>& tree,
-                  const std::array<point<D>, shift_code_count<D>>& shifts,
-                  std::uint32_t allowed, const box<D>& targets, double group_radius,
-                  workspace& work) const {
+  void build_list(const hashed_tree<D>& tree, const std::array<point<D>, shift_code_count<D>>& shifts,
+                  std::uint32_t allowed, const box<D>& targets, double group_radius, workspace& work) const {
     const search_node<D>* nodes = tree.search_nodes().data();
     const point<D>* positions = tree.positions();
     const double* h = tree.smoothing_lengths();
@@ -304,4 +302,4 @@ private:
   neighbour_list_builder builder_;
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

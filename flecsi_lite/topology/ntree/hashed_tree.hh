@@ -4,11 +4,11 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
-#include "flecsi_lite/topology/ntree/sfc/keys.hh"
-#include "flecsi_lite/topology/ntree/multipole.hh"
 #include "flecsi_lite/topology/ntree/detail/node_moments.hh"
 #include "flecsi_lite/topology/ntree/detail/node_table.hh"
 #include "flecsi_lite/topology/ntree/detail/search_node.hh"
+#include "flecsi_lite/topology/ntree/multipole.hh"
+#include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
 #include <algorithm>
@@ -41,9 +41,9 @@ struct tree_node {
   /// Tight box of the particles (not the key cell): searches prune on it, so they stay exact
   /// when particles have moved since their keys were computed (see hashed_tree::refit).
   box<D> bounds = box<D>::empty();
-  double h_max = 0; ///< largest smoothing length of the particles
+  double h_max = 0;  ///< largest smoothing length of the particles
   double mass = 0;
-  point<D> center{}; ///< centre of mass (centre of the bounds when the mass is zero)
+  point<D> center{};  ///< centre of mass (centre of the bounds when the mass is zero)
 
   bool is_leaf() const { return child_count == 0; }
   std::uint32_t size() const { return end - begin; }
@@ -53,13 +53,13 @@ struct tree_node {
 /// they must outlive it and, once changed, be passed again to refit() before a search.
 template<int D>
 class hashed_tree {
-public:
+ public:
   static constexpr std::uint32_t npos = node_table::npos;
 
   /// Builds the tree of n particles sorted by (key, id): `keys` are their full-depth keys,
   /// `x`, `m`, `h` their positions, masses and smoothing lengths.
-  void build(const key_type* keys, const point<D>* x, const double* m, const double* h,
-             std::size_t n, const tree_options& options = {}) {
+  void build(const key_type* keys, const point<D>* x, const double* m, const double* h, std::size_t n,
+             const tree_options& options = {}) {
     const std::size_t bucket = options.bucket_size;
     build(keys, x, m, h, n, options, [bucket](const tree_node<D>& node) { return node.size() > bucket; });
   }
@@ -68,8 +68,8 @@ public:
   /// `split(node)` is true, called with its key, level and range here. The distributed gravity
   /// tree decides so by the global count of a node whose particles straddle ranks.
   template<class SplitRule>
-  void build(const key_type* keys, const point<D>* x, const double* m, const double* h,
-             std::size_t n, const tree_options& options, const SplitRule& split) {
+  void build(const key_type* keys, const point<D>* x, const double* m, const double* h, std::size_t n,
+             const tree_options& options, const SplitRule& split) {
     assert(options.bucket_size >= 1);
     assert(n < npos);
 #ifndef NDEBUG
@@ -146,11 +146,10 @@ public:
   /// Memory held by the tree (nodes, hash table, quadrupoles, level index).
   std::size_t bytes() const {
     return nodes_.size() * (sizeof(tree_node<D>) + sizeof(search_node<D>)) + table_.bytes() +
-           quadrupoles_.size() * sizeof(quadrupole<D>) +
-           level_begin_.size() * sizeof(std::uint32_t);
+           quadrupoles_.size() * sizeof(quadrupole<D>) + level_begin_.size() * sizeof(std::uint32_t);
   }
 
-private:
+ private:
   std::size_t level_size(int l) const { return level_begin_[l + 1] - level_begin_[l]; }
 
   // Splits the nodes [first, last) (one level) and appends their children; returns how many.
@@ -160,47 +159,51 @@ private:
     const std::size_t count = last - first;
     child_begin_.resize(count * (children + 1));
     child_offset_.resize(count);
-    flecsi_lite::forall(count, [&](std::size_t i) {
-      const tree_node<D>& parent = nodes_[first + i];
-      std::uint32_t* bound = child_begin_.data() + i * (children + 1);
-      std::uint32_t nonempty = 0;
-      if (parent.level < max_level<D> && split(parent)) {
-        // Particles of child c are those whose key has child(parent.key, c) as prefix; sorted
-        // keys make each such range contiguous, found by binary search on the shifted prefix.
-        const int below = D * (max_level<D> - parent.level - 1);
-        bound[0] = parent.begin;
-        for (unsigned c = 1; c < children; ++c) {
-          const key_type first_key = child<D>(parent.key, c) << below;
-          bound[c] = static_cast<std::uint32_t>(
-            std::lower_bound(keys + bound[c - 1], keys + parent.end, first_key) - keys);
+    flecsi_lite::forall(
+      count,
+      [&](std::size_t i) {
+        const tree_node<D>& parent = nodes_[first + i];
+        std::uint32_t* bound = child_begin_.data() + i * (children + 1);
+        std::uint32_t nonempty = 0;
+        if (parent.level < max_level<D> && split(parent)) {
+          // Particles of child c are those whose key has child(parent.key, c) as prefix; sorted
+          // keys make each such range contiguous, found by binary search on the shifted prefix.
+          const int below = D * (max_level<D> - parent.level - 1);
+          bound[0] = parent.begin;
+          for (unsigned c = 1; c < children; ++c) {
+            const key_type first_key = child<D>(parent.key, c) << below;
+            bound[c] =
+              static_cast<std::uint32_t>(std::lower_bound(keys + bound[c - 1], keys + parent.end, first_key) - keys);
+          }
+          bound[children] = parent.end;
+          for (unsigned c = 0; c < children; ++c) nonempty += bound[c + 1] > bound[c];
         }
-        bound[children] = parent.end;
-        for (unsigned c = 0; c < children; ++c) nonempty += bound[c + 1] > bound[c];
-      }
-      child_offset_[i] = nonempty;
-    }, "ntree::hashed_tree::split");
-    const std::size_t added =
-      flecsi_lite::exclusive_scan(child_offset_.data(), count, "ntree::hashed_tree::offsets");
+        child_offset_[i] = nonempty;
+      },
+      "ntree::hashed_tree::split");
+    const std::size_t added = flecsi_lite::exclusive_scan(child_offset_.data(), count, "ntree::hashed_tree::offsets");
     nodes_.resize(last + added);
-    flecsi_lite::forall(count, [&](std::size_t i) {
-      tree_node<D>& parent = nodes_[first + i];
-      const std::uint32_t next = i + 1 < count ? child_offset_[i + 1]
-                                               : static_cast<std::uint32_t>(added);
-      parent.first_child = static_cast<std::uint32_t>(last + child_offset_[i]);
-      parent.child_count = static_cast<std::uint8_t>(next - child_offset_[i]);
-      if (parent.is_leaf()) return;
-      const std::uint32_t* bound = child_begin_.data() + i * (children + 1);
-      std::uint32_t at = parent.first_child;
-      for (unsigned c = 0; c < children; ++c) {
-        if (bound[c + 1] == bound[c]) continue;
-        tree_node<D>& node = nodes_[at++];
-        node = tree_node<D>{};
-        node.key = child<D>(parent.key, c);
-        node.begin = bound[c];
-        node.end = bound[c + 1];
-        node.level = static_cast<std::uint8_t>(parent.level + 1);
-      }
-    }, "ntree::hashed_tree::link");
+    flecsi_lite::forall(
+      count,
+      [&](std::size_t i) {
+        tree_node<D>& parent = nodes_[first + i];
+        const std::uint32_t next = i + 1 < count ? child_offset_[i + 1] : static_cast<std::uint32_t>(added);
+        parent.first_child = static_cast<std::uint32_t>(last + child_offset_[i]);
+        parent.child_count = static_cast<std::uint8_t>(next - child_offset_[i]);
+        if (parent.is_leaf()) return;
+        const std::uint32_t* bound = child_begin_.data() + i * (children + 1);
+        std::uint32_t at = parent.first_child;
+        for (unsigned c = 0; c < children; ++c) {
+          if (bound[c + 1] == bound[c]) continue;
+          tree_node<D>& node = nodes_[at++];
+          node = tree_node<D>{};
+          node.key = child<D>(parent.key, c);
+          node.begin = bound[c];
+          node.end = bound[c + 1];
+          node.level = static_cast<std::uint8_t>(parent.level + 1);
+        }
+      },
+      "ntree::hashed_tree::link");
     return added;
   }
 
@@ -240,4 +243,4 @@ private:
   std::vector<std::uint32_t> child_offset_;
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

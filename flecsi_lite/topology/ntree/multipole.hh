@@ -51,8 +51,7 @@ inline void add_point_mass(quadrupole<D>& q, double m, const column_vector<D>& d
 /// Q += Q_child + m_child (3 d d^T - |d|^2 I): parallel-axis theorem for a child of mass
 /// `m_child` whose centre of mass sits at offset `d` from the parent's.
 template<int D>
-inline void add_shifted(quadrupole<D>& q, const quadrupole<D>& child, double m_child,
-                        const column_vector<D>& d) {
+inline void add_shifted(quadrupole<D>& q, const quadrupole<D>& child, double m_child, const column_vector<D>& d) {
   q += child;
   add_point_mass<D>(q, m_child, d);
 }
@@ -60,8 +59,7 @@ inline void add_shifted(quadrupole<D>& q, const quadrupole<D>& child, double m_c
 /// Potential at x of mass `m` at `center` with quadrupole `q` about it:
 /// phi = -m/r - (r.Q.r) / (2 r^5), r = x - center. Precondition: x != center.
 template<int D>
-inline double multipole_potential(double m, const point<D>& center, const quadrupole<D>& q,
-                                  const point<D>& x) {
+inline double multipole_potential(double m, const point<D>& center, const quadrupole<D>& q, const point<D>& x) {
   const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(center);
   const double rqr = r.dot(q * r);
   const double inverse_r = 1 / r.norm();
@@ -72,8 +70,7 @@ inline double multipole_potential(double m, const point<D>& center, const quadru
 /// Acceleration at x (minus the gradient of multipole_potential):
 /// a = -m r/r^3 + Q r/r^5 - (5/2)(r.Q.r) r/r^7. Precondition: x != center.
 template<int D>
-inline point<D> multipole_acceleration(double m, const point<D>& center, const quadrupole<D>& q,
-                                       const point<D>& x) {
+inline point<D> multipole_acceleration(double m, const point<D>& center, const quadrupole<D>& q, const point<D>& x) {
   const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(center);
   const column_vector<D> qr = q * r;
   const double rqr = r.dot(qr);
@@ -82,8 +79,7 @@ inline point<D> multipole_acceleration(double m, const point<D>& center, const q
   const double inverse_r3 = inverse_r2 * inverse_r;
   const double inverse_r5 = inverse_r3 * inverse_r2;
   point<D> a;
-  as_column_vector<D>(a) =
-    (-m * inverse_r3 - 2.5 * rqr * inverse_r5 * inverse_r2) * r + inverse_r5 * qr;
+  as_column_vector<D>(a) = (-m * inverse_r3 - 2.5 * rqr * inverse_r5 * inverse_r2) * r + inverse_r5 * qr;
   return a;
 }
 
@@ -91,8 +87,8 @@ inline point<D> multipole_acceleration(double m, const point<D>& center, const q
 /// and returns multipole_potential, bit for bit, sharing r, 1/r and Q r. Precondition:
 /// x != center.
 template<int D>
-inline double multipole_field(double m, const point<D>& center, const quadrupole<D>& q,
-                              const point<D>& x, point<D>& acceleration) {
+inline double multipole_field(double m, const point<D>& center, const quadrupole<D>& q, const point<D>& x,
+                              point<D>& acceleration) {
   const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(center);
   const column_vector<D> qr = q * r;
   const double rqr = r.dot(qr);
@@ -100,9 +96,8 @@ inline double multipole_field(double m, const point<D>& center, const quadrupole
   const double inverse_r2 = inverse_r * inverse_r;
   const double inverse_r3 = inverse_r2 * inverse_r;
   const double inverse_r5 = inverse_r3 * inverse_r2;
-  as_column_vector<D>(acceleration) =
-    (-m * inverse_r3 - 2.5 * rqr * inverse_r5 * inverse_r2) * r + inverse_r5 * qr;
+  as_column_vector<D>(acceleration) = (-m * inverse_r3 - 2.5 * rqr * inverse_r5 * inverse_r2) * r + inverse_r5 * qr;
   return -m * inverse_r - 0.5 * rqr * inverse_r2 * inverse_r2 * inverse_r;
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

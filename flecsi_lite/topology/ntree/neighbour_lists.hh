@@ -32,17 +32,13 @@ inline double interaction_radius(double support, double h_target, double h_sourc
   }
 }
 
-inline double interaction_radius(interaction kind, double support, double h_target,
-                                 double h_source) {
-  return kind == interaction::gather
-           ? interaction_radius<interaction::gather>(support, h_target, h_source)
-           : interaction_radius<interaction::symmetric>(support, h_target, h_source);
+inline double interaction_radius(interaction kind, double support, double h_target, double h_source) {
+  return kind == interaction::gather ? interaction_radius<interaction::gather>(support, h_target, h_source)
+                                     : interaction_radius<interaction::symmetric>(support, h_target, h_source);
 }
 
 /// The pair criterion: strictly inside the radius.
-inline bool within_radius(double distance_squared, double radius) {
-  return distance_squared < radius * radius;
-}
+inline bool within_radius(double distance_squared, double radius) { return distance_squared < radius * radius; }
 
 struct search_options {
   interaction kind = interaction::gather;
@@ -70,9 +66,7 @@ inline std::uint32_t packed_entry(std::uint32_t b, shift_code code) {
   return b | static_cast<std::uint32_t>(code) << packed_index_bits;
 }
 inline std::uint32_t packed_neighbour(std::uint32_t entry) { return entry & packed_index_mask; }
-inline shift_code packed_shift(std::uint32_t entry) {
-  return static_cast<shift_code>(entry >> packed_index_bits);
-}
+inline shift_code packed_shift(std::uint32_t entry) { return static_cast<shift_code>(entry >> packed_index_bits); }
 
 /// Neighbours of every target in compressed sparse row form: those of particle a are
 /// neighbours[offsets[a] .. offsets[a + 1]), in ascending sorted index; a non-target has none.
@@ -106,7 +100,7 @@ inline std::size_t chunk_count_for(std::size_t work_items) {
   return std::max<std::size_t>(1, std::min(work_items, wanted));
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree
 
 // Lists are large: tasks take them by reference (the searches that replace them wait for every
 // pending launch).

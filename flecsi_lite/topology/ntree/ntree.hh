@@ -11,9 +11,9 @@
 #include "flecsi_lite/topology/ntree/distributed/distribution_stats.hh"
 #include "flecsi_lite/topology/ntree/distributed/local_tree.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
 #include <array>
@@ -66,7 +66,7 @@ struct ntree_config {
 /// then (key, id). Every field defined on ntree<D> follows its particles through distribute().
 template<int D>
 class ntree : public data::topology_base {
-public:
+ public:
   using config = ntree_config<D>;
   using point_type = point<D>;
 
@@ -76,9 +76,11 @@ public:
   // Built-in fields, with their persistence (data/persistence.hh): written to outputs and
   // checkpoints as x y z (zeros beyond D), id, m, h, and read from initial data (id optional:
   // the particle's index in the file). The key does not persist: distribute() recomputes it.
-  static inline const definition<point<D>> position{"position", persist::as("x", "y", "z").padded().output().restart()
-    .initial_required(persist::must_be_finite("positions"))};
-  static inline const definition<std::uint64_t> id{"id", persist::output().restart().initial_optional_index()};  ///< unique
+  static inline const definition<point<D>> position{
+    "position",
+    persist::as("x", "y", "z").padded().output().restart().initial_required(persist::must_be_finite("positions"))};
+  static inline const definition<std::uint64_t> id{"id",
+                                                   persist::output().restart().initial_optional_index()};  ///< unique
   static inline const definition<double> mass{
     "mass", persist::as("m").output().restart().initial_required(persist::must_be_positive("masses"))};
   static inline const definition<double> smoothing_length{
@@ -140,7 +142,7 @@ public:
   /// ghosts, so stale ghost values are copied first; tasks using the tree run after it.
   void refresh_local_tree();
 
-private:
+ private:
   template<class T>
   data::field_storage<T>& values(const typename field<T>::template definition<ntree>& f) {
     return this->template storage<T>(f.id(), f.name());
@@ -158,6 +160,6 @@ private:
   tracked<local_tree<D>> local_{"ntree local tree"};
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree
 
 #include "flecsi_lite/topology/ntree/distributed/ntree_impl.hh"

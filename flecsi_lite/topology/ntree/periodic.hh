@@ -18,11 +18,15 @@ namespace flecsi_lite::topology::ntree {
 using shift_code = std::uint8_t;
 
 template<int D>
-constexpr int shift_code_count = D == 1 ? 3 : D == 2 ? 9 : 27;
+constexpr int shift_code_count = D == 1   ? 3
+                                 : D == 2 ? 9
+                                          : 27;
 
 /// The code of the zero shift (digit 1 on every axis).
 template<int D>
-constexpr shift_code zero_shift = D == 1 ? 1 : D == 2 ? 4 : 13;
+constexpr shift_code zero_shift = D == 1   ? 1
+                                  : D == 2 ? 4
+                                           : 13;
 
 /// The box in which particles live, periodic along the axes flagged in `periodic` with period
 /// hi - lo. Particles must lie inside the box along periodic axes (the physics wraps them).
@@ -90,4 +94,4 @@ struct domain {
   }
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

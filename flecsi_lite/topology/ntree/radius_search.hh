@@ -4,11 +4,11 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/detail/neighbour_list_builder.hh"
+#include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
+#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
-#include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
 
 #include <cassert>
 #include <cstddef>
@@ -21,9 +21,8 @@ namespace flecsi_lite::topology::ntree {
 /// is the mask of image shifts to try (domain::allowed_shifts()). Node boxes are pruned with
 /// the box distance, which never exceeds a member's distance, so the result is exact.
 template<int D, interaction Kind, bool Periodic, class Visit>
-void walk_target(const hashed_tree<D>& tree,
-                 const std::array<point<D>, shift_code_count<D>>& shifts, std::uint32_t allowed,
-                 const point<D>& x, double h_target, double support, Visit&& visit) {
+void walk_target(const hashed_tree<D>& tree, const std::array<point<D>, shift_code_count<D>>& shifts,
+                 std::uint32_t allowed, const point<D>& x, double h_target, double support, Visit&& visit) {
   if (tree.size() == 0) return;
   const search_node<D>* nodes = tree.search_nodes().data();
   const point<D>* positions = tree.positions();
@@ -42,12 +41,10 @@ void walk_target(const hashed_tree<D>& tree,
           const int code = __builtin_ctz(rest);
           point<D> image;
           for (int k = 0; k < D; ++k) image[k] = positions[b][k] + shifts[code][k];
-          if (within_radius(distance_squared<D>(x, image), radius))
-            visit(b, static_cast<shift_code>(code));
+          if (within_radius(distance_squared<D>(x, image), radius)) visit(b, static_cast<shift_code>(code));
         }
       } else {
-        if (within_radius(distance_squared<D>(x, positions[b]), radius))
-          visit(b, zero_shift<D>);
+        if (within_radius(distance_squared<D>(x, positions[b]), radius)) visit(b, zero_shift<D>);
       }
     }
   };
@@ -57,12 +54,11 @@ void walk_target(const hashed_tree<D>& tree,
 /// Ball query: calls visit(b, code) for every source image within `radius` of the point `x`
 /// (|x - (x_b + shift)| < radius), in ascending (b, code).
 template<int D, class Visit>
-void for_each_within(const hashed_tree<D>& tree, const domain<D>& space, const point<D>& x,
-                     double radius, Visit&& visit) {
+void for_each_within(const hashed_tree<D>& tree, const domain<D>& space, const point<D>& x, double radius,
+                     Visit&& visit) {
   const auto shifts = space.shift_table();
   if (space.any_periodic())
-    walk_target<D, interaction::gather, true>(tree, shifts, space.allowed_shifts(), x, radius,
-                                              1.0, visit);
+    walk_target<D, interaction::gather, true>(tree, shifts, space.allowed_shifts(), x, radius, 1.0, visit);
   else
     walk_target<D, interaction::gather, false>(tree, shifts, 0, x, radius, 1.0, visit);
 }
@@ -71,7 +67,7 @@ void for_each_within(const hashed_tree<D>& tree, const domain<D>& space, const p
 /// group walk (group_walk.hh) shares one walk among nearby targets and is usually faster.
 template<int D>
 class radius_search {
-public:
+ public:
   explicit radius_search(search_options options = {}) : options_(options) {}
 
   const search_options& options() const { return options_; }
@@ -86,20 +82,20 @@ public:
     const std::uint32_t allowed = space.allowed_shifts();
     const search_options options = options_;
     dispatch_search(options.kind, space.any_periodic(), [&](auto kind, auto periodic) {
-      flecsi_lite::forall(tree.size(), [&](std::size_t a) {
-        if (!options.is_target(a)) return;
-        walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
-          tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a],
-          options.support, [&](std::size_t b, shift_code code) {
-            call_apply<D>(apply, a, b, code, shifts);
-          });
-      }, "ntree::radius_search", flecsi_lite::dynamic_schedule{});
+      flecsi_lite::forall(
+        tree.size(),
+        [&](std::size_t a) {
+          if (!options.is_target(a)) return;
+          walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
+            tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a], options.support,
+            [&](std::size_t b, shift_code code) { call_apply<D>(apply, a, b, code, shifts); });
+        },
+        "ntree::radius_search", flecsi_lite::dynamic_schedule{});
     });
   }
 
   /// Neighbour lists of all targets (shift codes too when the domain is periodic).
-  void find_neighbours(const hashed_tree<D>& tree, const domain<D>& space,
-                       neighbour_lists& out) {
+  void find_neighbours(const hashed_tree<D>& tree, const domain<D>& space, neighbour_lists& out) {
     check_periodic_reach(tree, space, options_.support);
     const std::size_t n = tree.size();
     const std::size_t chunks = chunk_count_for(n);
@@ -110,26 +106,27 @@ public:
     do {  // twice when a chunk outgrew its region (neighbour_list_builder)
       builder_.start(n, chunks, out, entries);
       dispatch_search(options.kind, space.any_periodic(), [&](auto kind, auto periodic) {
-        flecsi_lite::forall(chunks, [&](std::size_t c) {
-          auto& part = builder_[c];
-          const std::size_t first = n * c / chunks;
-          const std::size_t last = n * (c + 1) / chunks;
-          for (std::size_t a = first; a < last; ++a) {
-            if (!options.is_target(a)) continue;
-            walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
-              tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a],
-              options.support, [&](std::size_t b, shift_code code) {
-                part.append(a, static_cast<std::uint32_t>(b), code, entries);
-              });
-          }
-        }, "ntree::radius_search::lists", flecsi_lite::dynamic_schedule{});
+        flecsi_lite::forall(
+          chunks,
+          [&](std::size_t c) {
+            auto& part = builder_[c];
+            const std::size_t first = n * c / chunks;
+            const std::size_t last = n * (c + 1) / chunks;
+            for (std::size_t a = first; a < last; ++a) {
+              if (!options.is_target(a)) continue;
+              walk_target<D, decltype(kind)::value, decltype(periodic)::value>(
+                tree, shifts, allowed, tree.positions()[a], tree.smoothing_lengths()[a], options.support,
+                [&](std::size_t b, shift_code code) { part.append(a, static_cast<std::uint32_t>(b), code, entries); });
+            }
+          },
+          "ntree::radius_search::lists", flecsi_lite::dynamic_schedule{});
       });
     } while (!builder_.finish(out, entries));
   }
 
-private:
+ private:
   search_options options_;
   neighbour_list_builder builder_;
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

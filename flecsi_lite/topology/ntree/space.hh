@@ -151,4 +151,4 @@ inline double distance_squared(const box<D>& a, const box<D>& b) {
   return r2;
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

@@ -14,9 +14,12 @@ struct cubic_spline_shape {
   /// sigma_D of the seed's (1.13): 2/3, 10/(7 pi), 1/pi.
   template<int D>
   static constexpr double normalization() {
-    if constexpr (D == 1) return 2.0 / 3.0;
-    else if constexpr (D == 2) return 10.0 / (7.0 * pi);
-    else return 1.0 / pi;
+    if constexpr (D == 1)
+      return 2.0 / 3.0;
+    else if constexpr (D == 2)
+      return 10.0 / (7.0 * pi);
+    else
+      return 1.0 / pi;
   }
 
   // The density loop evaluates f and q f'(q) for neighbours in random order of q: there, with
@@ -49,7 +52,7 @@ struct cubic_spline_shape {
     return derivative_over_q_pieces(q, [inverse_q](T p) -> T { return -0.75 * integer_power<2>(2.0 - p) * inverse_q; });
   }
 
-private:
+ private:
   /// f'(q)/q with the piece on [1,2] given: a branch for one double, a lane selection for a pack.
   template<class T, class Outer>
   KOKKOS_INLINE_FUNCTION static T derivative_over_q_pieces(T q, Outer&& outer) {
@@ -63,14 +66,20 @@ private:
   }
   // max(x, 0) as (x + |x|) / 2, exact: a form compilers do not turn back into a branch.
   template<class T>
-  KOKKOS_INLINE_FUNCTION static T positive_part(T x) { return 0.5 * (x + simd::absolute(x)); }
+  KOKKOS_INLINE_FUNCTION static T positive_part(T x) {
+    return 0.5 * (x + simd::absolute(x));
+  }
   template<class T>
-  KOKKOS_INLINE_FUNCTION static T outer_part(T q) { return positive_part(2.0 - q); }
+  KOKKOS_INLINE_FUNCTION static T outer_part(T q) {
+    return positive_part(2.0 - q);
+  }
   template<class T>
-  KOKKOS_INLINE_FUNCTION static T inner_part(T q) { return positive_part(1.0 - q); }
+  KOKKOS_INLINE_FUNCTION static T inner_part(T q) {
+    return positive_part(1.0 - q);
+  }
 };
 
 template<int D>
 using cubic_spline = radial_kernel<cubic_spline_shape, D>;
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

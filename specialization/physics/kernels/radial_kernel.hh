@@ -68,9 +68,7 @@ struct radial_kernel {
   static constexpr double sigma = Shape::template normalization<D>();
 
   /// True when a neighbour at distance r contributes: r < 2h.
-  KOKKOS_INLINE_FUNCTION static bool in_support(double r, double h) {
-    return r < kernel_support * h;
-  }
+  KOKKOS_INLINE_FUNCTION static bool in_support(double r, double h) { return r < kernel_support * h; }
 
   /// W(r, h).
   KOKKOS_INLINE_FUNCTION static double value(double r, double h) {
@@ -88,8 +86,7 @@ struct radial_kernel {
   /// (1/r) dW/dr, so that grad_a W_ab = (r_a - r_b) * gradient_factor; finite (not 0/0) at r = 0.
   KOKKOS_INLINE_FUNCTION static double gradient_factor(double r, double h) {
     const double inverse_h = 1.0 / h;
-    return sigma * integer_power<D + 2>(inverse_h) *
-           Shape::template derivative_over_q<D>(r * inverse_h);
+    return sigma * integer_power<D + 2>(inverse_h) * Shape::template derivative_over_q<D>(r * inverse_h);
   }
 
   /// dW/dh at fixed r = -(sigma / h^(D+1)) (D f(q) + q f'(q)), for the grad-h terms.
@@ -101,4 +98,4 @@ struct radial_kernel {
   }
 };
 
-} // namespace flecsph::physics
+}  // namespace flecsph::physics

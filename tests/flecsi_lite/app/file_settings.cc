@@ -14,7 +14,7 @@ app::file_settings read(const app::file_settings& defaults, const std::vector<st
   block.declare(schema);
   return block.read(runtime::parameters::parse(schema, "", "", overrides));
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("the file keys keep an app's defaults and read none as no file") {
   app::file_settings defaults;
@@ -41,6 +41,7 @@ TEST_CASE("the file keys keep an app's defaults and read none as no file") {
 TEST_CASE("contradictory file keys are parameter errors that say what to change") {
   CHECK_THROWS_WITH(read({}, {"restart_file=a.h5part", "initial_data=b.h5part"}),
                     Contains("restart_file and initial_data are both set"));
-  CHECK_THROWS_WITH(read({}, {"checkpoint_every=5"}), Contains("checkpoint_every = 5 needs a checkpoint_file (it is none)"));
+  CHECK_THROWS_WITH(read({}, {"checkpoint_every=5"}),
+                    Contains("checkpoint_every = 5 needs a checkpoint_file (it is none)"));
   CHECK_THROWS_AS(read({}, {"initial_data_step=-2"}), runtime::parameter_error);
 }

@@ -10,11 +10,12 @@
 using namespace flecsi_lite;
 
 namespace {
-const std::string written = "# resolved parameters (run.par)\n"
-                            "gamma = 1.4            # run.par:2\n"
-                            "kernel = \"cubic # spline\"  # default\n"
-                            "end_time = 0.2         # run.par:3\n"
-                            "output_file = \"a.h5part\" # run.par:4\n";
+const std::string written =
+  "# resolved parameters (run.par)\n"
+  "gamma = 1.4            # run.par:2\n"
+  "kernel = \"cubic # spline\"  # default\n"
+  "end_time = 0.2         # run.par:3\n"
+  "output_file = \"a.h5part\" # run.par:4\n";
 
 std::string message_of(const std::string& now, const std::string& allowed) {
   try {
@@ -24,7 +25,7 @@ std::string message_of(const std::string& now, const std::string& allowed) {
   }
   return "";
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("parameter texts are read as key and value, quoted strings whole") {
   const auto values = app::parameter_values(written);
@@ -35,11 +36,13 @@ TEST_CASE("parameter texts are read as key and value, quoted strings whole") {
 }
 
 TEST_CASE("a restart may change the free keys, and others only when allowed") {
-  const std::string same_physics = "gamma = 1.4 # other origin\nkernel = \"cubic # spline\"\n"
-                                   "end_time = 0.2\noutput_file = \"b.h5part\"\n";
+  const std::string same_physics =
+    "gamma = 1.4 # other origin\nkernel = \"cubic # spline\"\n"
+    "end_time = 0.2\noutput_file = \"b.h5part\"\n";
   CHECK(message_of(same_physics, "none").empty());  // output_file is free, origins do not count
-  const std::string changed = "gamma = 1.6666666666666667\nkernel = \"wendland\"\nend_time = 0.2\n"
-                              "output_file = \"b.h5part\"\n";
+  const std::string changed =
+    "gamma = 1.6666666666666667\nkernel = \"wendland\"\nend_time = 0.2\n"
+    "output_file = \"b.h5part\"\n";
   const std::string message = message_of(changed, "none");
   CHECK(message.find("'c.h5part'") != std::string::npos);
   CHECK(message.find("gamma: checkpoint 1.4, this run 1.6666666666666667") != std::string::npos);

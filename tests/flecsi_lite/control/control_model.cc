@@ -16,7 +16,7 @@ struct state {
 auto logger(const std::string& what) {
   return [what](state& s) { s.log.push_back(what + std::to_string(s.step)); };
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("actions run in dependency order, ties in registration order") {
   control_model<state> m;
@@ -101,7 +101,7 @@ control_model<state> step_model() {
   m.depends(forces, drift).depends(kick, forces).depends(clock, kick);
   return m;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("after(name) places an action right after its anchor, before the anchor's dependents") {
   auto m = step_model();
@@ -186,9 +186,9 @@ TEST_CASE("the Graphviz output shows a placed action, marked, between its anchor
   // Actions of point 0: kick_drift a0, forces a1, kick a2, clock a3, report a4, cooling a5.
   CHECK(text.find("p0a5 [label=\"cooling\", style=\"rounded,filled\"") != std::string::npos);
   CHECK(text.find("placed after forces") != std::string::npos);
-  CHECK(text.find("p0a1 -> p0a5") != std::string::npos);  // forces -> cooling
-  CHECK(text.find("p0a5 -> p0a2") != std::string::npos);  // cooling -> kick
-  CHECK(text.find("p0a1 -> p0a2") == std::string::npos);  // no longer forces -> kick directly
+  CHECK(text.find("p0a1 -> p0a5") != std::string::npos);                  // forces -> cooling
+  CHECK(text.find("p0a5 -> p0a2") != std::string::npos);                  // cooling -> kick
+  CHECK(text.find("p0a1 -> p0a2") == std::string::npos);                  // no longer forces -> kick directly
   CHECK(text.find("p0a0 [label=\"kick_drift\"];") != std::string::npos);  // unplaced: plain
 }
 

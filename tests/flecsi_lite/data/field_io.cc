@@ -23,9 +23,12 @@ struct bag : data::topology_base {
 };
 enum class phase : std::int32_t { solid = 0, liquid = 1 };
 
-const field<double>::definition<bag> temperature{"temperature", persist::output().restart().initial_required(persist::at_least(0, "temperatures"))};
-const field<phase>::definition<bag> state{"phase", persist::output().initial_optional(persist::one_of({0, 1}, "0 for solid or 1 for liquid"))};
-const field<std::array<double, 2>>::definition<bag> velocity{"velocity", persist::as("vx", "vy", "vz").padded().output().restart().initial_optional()};
+const field<double>::definition<bag> temperature{
+  "temperature", persist::output().restart().initial_required(persist::at_least(0, "temperatures"))};
+const field<phase>::definition<bag> state{
+  "phase", persist::output().initial_optional(persist::one_of({0, 1}, "0 for solid or 1 for liquid"))};
+const field<std::array<double, 2>>::definition<bag> velocity{
+  "velocity", persist::as("vx", "vy", "vz").padded().output().restart().initial_optional()};
 const field<std::uint64_t>::definition<bag> label{"label", persist::output().initial_optional_index()};
 const field<double>::definition<bag> memory{"memory", persist::restart()};
 const field<double>::definition<bag> scratch{"scratch"};
@@ -53,7 +56,7 @@ io::slice my_block() {
   for (int r = 0; r < runtime::rank(); ++r) first += 2 + r;
   return {first, std::uint64_t(2 + runtime::rank())};
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("fields are written by role with their names, padding and element types", "[data][persistence]") {
   const auto block = my_block();
@@ -150,6 +153,7 @@ TEST_CASE("initial data: any numeric type, defaults for absent optional fields, 
   bag missing(in.block(1).count);
   CHECK_THROWS_AS(data::read_fields(missing, in, 1, data::role::initial), io::missing_dataset_error);
   bag negative(in.block(2).count);
-  CHECK_THROWS_WITH(data::read_fields(negative, in, 2, data::role::initial),
-                    "'" + file("field_io_initial") + "' Step#2: particle 4 has temperature = -1 (temperatures must be >= 0)");
+  CHECK_THROWS_WITH(
+    data::read_fields(negative, in, 2, data::role::initial),
+    "'" + file("field_io_initial") + "' Step#2: particle 4 has temperature = -1 (temperatures must be >= 0)");
 }

@@ -27,7 +27,7 @@ void fill(field<double>::accessor<wo> m, field<std::int64_t>::accessor<wo> i,
     x(k) = {double(k), 2.0 * k, 3.0 * k};
   }
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("every field is reordered by the same permutation") {
   bag b(5);

@@ -38,7 +38,7 @@ namespace {
 }
 [[maybe_unused]] void appends(std::vector<double>& values) { values.push_back(1.0); }
 [[maybe_unused]] double first(const std::vector<double>& values) { return values.front(); }
-} // namespace
+}  // namespace
 
 void launch_with_arguments(std::vector<double>& values) {
   execute<first>(values);  // a const reference: the task gets a copy made at launch

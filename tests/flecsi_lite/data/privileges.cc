@@ -35,8 +35,10 @@ static_assert(!writable<acc<ro, ro>>);
 static_assert(std::is_same_v<decltype(std::declval<acc<ro, ro>>().data()), const double*>);
 static_assert(writable<acc<rw, rw>> && writable<acc<wo, rw>>);
 static_assert(!writable<acc<rw, ro>> && !writable<acc<ro, rw>>);
-static_assert(std::is_assignable_v<owned_at<acc<rw, ro>>, double> && !std::is_assignable_v<ghost_at<acc<rw, ro>>, double>);
-static_assert(!std::is_assignable_v<owned_at<acc<ro, wo>>, double> && std::is_assignable_v<ghost_at<acc<ro, wo>>, double>);
+static_assert(std::is_assignable_v<owned_at<acc<rw, ro>>, double> &&
+              !std::is_assignable_v<ghost_at<acc<rw, ro>>, double>);
+static_assert(!std::is_assignable_v<owned_at<acc<ro, wo>>, double> &&
+              std::is_assignable_v<ghost_at<acc<ro, wo>>, double>);
 // Ghosts only: f(i) is the ghost region's (owned entities fail at run time).
 static_assert(writable<acc<na, wo>> && !writable<acc<na, ro>>);
 static_assert(std::is_same_v<ghost_at<acc<na, wo>>, double&> && std::is_same_v<ghost_at<acc<na, ro>>, const double&>);
@@ -62,7 +64,7 @@ void owned_from_ghost(field<double>::accessor<rw, ro> f) {
 }
 double at_index(field<double>::accessor<ro, ro> f, std::size_t i) { return f(i); }
 double owned_value(field<double>::accessor<ro> f, std::size_t i) { return f(i); }
-} // namespace
+}  // namespace
 
 TEST_CASE("a ghost-only accessor writes ghosts and nothing else") {
   bag b(4, 2);
@@ -76,14 +78,14 @@ TEST_CASE("a ghost-only accessor writes ghosts and nothing else") {
 TEST_CASE("an owned entity through a ghost-only accessor fails, naming the field") {
   bag b(4, 2);
   execute<fill>(pressure(b));
-  CHECK_THROWS_WITH(execute<touch_owned>(pressure(b)).get(),
-                    Catch::Contains("field 'pressure'") && Catch::Contains("accessor<na, wo>") &&
-                      Catch::Contains("owned entity 0"));
+  CHECK_THROWS_WITH(execute<touch_owned>(pressure(b)).get(), Catch::Contains("field 'pressure'") &&
+                                                               Catch::Contains("accessor<na, wo>") &&
+                                                               Catch::Contains("owned entity 0"));
   CHECK(execute<owned_value>(pressure(b), 0).get() == 0.0);  // the write did not happen
-  execute<fill>(pressure(b));  // the ghosts are defined again
-  CHECK_THROWS_WITH(execute<read_owned>(pressure(b)).get(),
-                    Catch::Contains("field 'pressure'") && Catch::Contains("accessor<na, ro>") &&
-                      Catch::Contains("owned entity 3"));
+  execute<fill>(pressure(b));                                // the ghosts are defined again
+  CHECK_THROWS_WITH(execute<read_owned>(pressure(b)).get(), Catch::Contains("field 'pressure'") &&
+                                                              Catch::Contains("accessor<na, ro>") &&
+                                                              Catch::Contains("owned entity 3"));
   execution::executor::instance().forgive_failures();
 }
 

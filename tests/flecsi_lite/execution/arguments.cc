@@ -31,7 +31,7 @@ double first(field<double>::accessor<ro> f) { return f.size() ? f(0) : -1.0; }
 
 static_assert(execution::shared_argument_v<narray> && execution::shared_argument_v<const narray&>);
 static_assert(!execution::shared_argument_v<std::vector<double>> && !execution::shared_argument_v<settings>);
-} // namespace
+}  // namespace
 
 TEST_CASE("a value changed after the launch: the task sees the launch-time value") {
   int x = 1;

@@ -41,7 +41,7 @@ std::vector<std::string> completion_order() {
 std::size_t position_of(const std::vector<std::string>& names, const std::string& name) {
   return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("read after write: a reader sees the preceding write") {
   narray n(64, 1, false);
@@ -78,9 +78,9 @@ TEST_CASE("write after read: a writer that could run first waits for a delayed r
   narray n(64, 1, false);
   execute<set>(a(n), 5.0);
   wait_all();
-  auto total = reduce<one, reduction::sum>();                // in flight for a while
-  auto seen = execute<first_plus>(a(n), total);              // reads a, waits for the collective
-  execute<set>(a(n), 7.0);                                   // ready at once without the edge
+  auto total = reduce<one, reduction::sum>();    // in flight for a while
+  auto seen = execute<first_plus>(a(n), total);  // reads a, waits for the collective
+  execute<set>(a(n), 7.0);                       // ready at once without the edge
   CHECK(seen.get() == 5.0 + runtime::size());
   CHECK(execute<first>(a(n)).get() == 7.0);
 }

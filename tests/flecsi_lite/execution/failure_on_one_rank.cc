@@ -27,7 +27,7 @@ double sum_with_ghosts(field<double>::accessor<ro, ro> f) {
   for (std::size_t i = 0; i < f.size(); ++i) s += f(i);
   return s;
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   runtime::runtime rt(argc, argv);
@@ -37,8 +37,8 @@ int main(int argc, char** argv) {
     execute<set>(a(n), 1.0);
     execute<fail_on_last_rank>(a(n));
     for (int step = 0; step < 3; ++step)  // needs every rank's ghosts and values
-      std::cout << "rank " << runtime::rank() << ": "
-                << reduce<sum_with_ghosts, reduction::sum>(a(n)).get() << std::endl;
+      std::cout << "rank " << runtime::rank() << ": " << reduce<sum_with_ghosts, reduction::sum>(a(n)).get()
+                << std::endl;
   } catch (const std::exception& e) {
     std::cerr << "rank " << runtime::rank() << " caught: " << e.what() << std::endl;
     return 3;

@@ -37,7 +37,7 @@ double local_first(field<double>::accessor<ro> f) {
   ++dependents_run;
   return f(0);
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("an exception reaches its own future and cancels the dependents") {
   auto& ex = execution::executor::instance();
@@ -48,7 +48,7 @@ TEST_CASE("an exception reaches its own future and cancels the dependents") {
   auto failed = execute<explode>(a(n));
   auto reader = execute<first_with_ghosts>(a(n));            // depends through the ghost copy
   auto reduced = reduce<local_first, reduction::sum>(a(n));  // a reduction depending on it
-  auto chained = execute<twice>(reader);                      // depends through a future
+  auto chained = execute<twice>(reader);                     // depends through a future
   auto unrelated = execute<first>(b(n));
   CHECK(unrelated.get() == 2.0);  // not the failure's business
   CHECK_THROWS_WITH(failed.get(), "the explosion");

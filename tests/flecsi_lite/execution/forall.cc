@@ -14,9 +14,12 @@ using flecsi_lite::dynamic_schedule;
 TEST_CASE("forall visits every index once, evenly split or dynamically scheduled") {
   for (std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{1000}, std::size_t{4099}}) {
     std::vector<int> even(n, 0), dynamic(n, 0), chunked(n, 0);
-    flecsi_lite::forall(n, [&](std::size_t i) { ++even[i]; }, "test::even");
-    flecsi_lite::forall(n, [&](std::size_t i) { ++dynamic[i]; }, "test::dynamic", dynamic_schedule{});
-    flecsi_lite::forall(n, [&](std::size_t i) { ++chunked[i]; }, "test::chunked", dynamic_schedule{7});
+    flecsi_lite::forall(
+      n, [&](std::size_t i) { ++even[i]; }, "test::even");
+    flecsi_lite::forall(
+      n, [&](std::size_t i) { ++dynamic[i]; }, "test::dynamic", dynamic_schedule{});
+    flecsi_lite::forall(
+      n, [&](std::size_t i) { ++chunked[i]; }, "test::chunked", dynamic_schedule{7});
     CHECK(std::all_of(even.begin(), even.end(), [](int c) { return c == 1; }));
     CHECK(std::all_of(dynamic.begin(), dynamic.end(), [](int c) { return c == 1; }));
     CHECK(std::all_of(chunked.begin(), chunked.end(), [](int c) { return c == 1; }));
@@ -35,8 +38,8 @@ TEST_CASE("forall_reduce gives the serial minimum, maximum and integer sum under
     n, [&](std::size_t i, double& m) { m = std::min(m, x[i]); }, Kokkos::Min<double>(bottom), "test::min",
     dynamic_schedule{256});
   flecsi_lite::forall_reduce(
-    n, [&](std::size_t i, double& m) { m = std::max(m, x[i]); }, Kokkos::Max<double>(top_dynamic),
-    "test::max_dynamic", dynamic_schedule{});
+    n, [&](std::size_t i, double& m) { m = std::max(m, x[i]); }, Kokkos::Max<double>(top_dynamic), "test::max_dynamic",
+    dynamic_schedule{});
   flecsi_lite::forall_reduce(
     n, [&](std::size_t i, std::int64_t& s) { s += static_cast<std::int64_t>(i); }, Kokkos::Sum<std::int64_t>(sum),
     "test::sum");

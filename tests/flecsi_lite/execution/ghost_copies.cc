@@ -11,9 +11,9 @@
 #include <cmath>
 
 using namespace flecsi_lite;
-using topology::narray;
 using testing::fill_scaled_index;
 using testing::ghosts_hold;
+using topology::narray;
 
 namespace {
 const field<double>::definition<narray> u{"u"};
@@ -43,24 +43,24 @@ bool all_ranks(bool mine) {
   MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LAND, runtime::communicator());
   return out;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("ghost copies happen when and only when ghost values are stale") {
   narray n(40, 2, true);
   const auto start = copies();
   execute<fill_scaled_index>(n, u(n), 1.0);
-  CHECK(copies() == start);                        // writing owned values copies nothing
+  CHECK(copies() == start);  // writing owned values copies nothing
   execute<owned_sum>(u(n));
-  CHECK(copies() == start);                        // reading owned values copies nothing
+  CHECK(copies() == start);  // reading owned values copies nothing
   CHECK(all_ranks(execute<ghosts_hold>(n, u(n), 1.0).get()));
-  CHECK(copies() == start + 1);                    // first ghost read: one copy
+  CHECK(copies() == start + 1);  // first ghost read: one copy
   execute<ghosts_hold>(n, u(n), 1.0);
   execute<ghosts_hold>(n, u(n), 1.0);
-  CHECK(copies() == start + 1);                    // still valid: no copy
-  execute<fill_scaled_index>(n, u(n), 3.0);               // owned values change: ghosts stale
+  CHECK(copies() == start + 1);              // still valid: no copy
+  execute<fill_scaled_index>(n, u(n), 3.0);  // owned values change: ghosts stale
   CHECK(all_ranks(execute<ghosts_hold>(n, u(n), 3.0).get()));
   CHECK(copies() == start + 2);
-  execute<write_ghosts>(u(n));                     // a task defines the ghost values itself
+  execute<write_ghosts>(u(n));  // a task defines the ghost values itself
   execute<ghosts_hold>(n, u(n), 3.0);
   CHECK(copies() == start + 2);
   wait_all();
@@ -115,7 +115,8 @@ TEST_CASE("ghost traffic counts the messages and bytes to other ranks, none to t
     const auto before = ex.traffic();
     CHECK(all_ranks(execute<ghosts_hold>(n, u(n), 1.0).get()));
     const auto after = ex.traffic();
-    const std::uint64_t neighbours = runtime::size() == 1 ? 0 : (runtime::rank() > 0) + (runtime::rank() + 1 < runtime::size());
+    const std::uint64_t neighbours =
+      runtime::size() == 1 ? 0 : (runtime::rank() > 0) + (runtime::rank() + 1 < runtime::size());
     CHECK(after.messages_sent - before.messages_sent == neighbours);
     CHECK(after.messages_received - before.messages_received == neighbours);
     CHECK(after.bytes_sent - before.bytes_sent == neighbours * n.halo() * sizeof(double));

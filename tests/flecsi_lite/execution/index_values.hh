@@ -18,4 +18,4 @@ inline bool ghosts_hold(const topology::narray& n, field<double>::accessor<ro, r
   return true;
 }
 
-} // namespace flecsi_lite::testing
+}  // namespace flecsi_lite::testing

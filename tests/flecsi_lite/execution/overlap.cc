@@ -10,9 +10,9 @@
 #include "index_values.hh"
 
 using namespace flecsi_lite;
-using topology::narray;
 using testing::fill_scaled_index;
 using testing::ghosts_hold;
+using topology::narray;
 
 namespace {
 const field<double>::definition<narray> big{"big"};
@@ -33,7 +33,7 @@ const execution::trace_event& find(const std::vector<execution::trace_event>& tr
   FAIL("no trace event " << name);
   return trace.front();
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a ghost copy is posted when its data is ready and advances while a long task runs") {
   REQUIRE(runtime::size() > 1);  // on one rank the copy is local and never in flight
@@ -46,7 +46,7 @@ TEST_CASE("a ghost copy is posted when its data is ready and advances while a lo
   wait_all();
   ex.clear_trace();
   ex.enable_tracing(true);
-  execute<fill_scaled_index>(n, big(n), 3.0);                  // the last writer of big: its copy is ready after it
+  execute<fill_scaled_index>(n, big(n), 3.0);  // the last writer of big: its copy is ready after it
   auto rounds = execute<long_task>(other(n));  // independent of big
   rounds.get();                                // runs before any reader of big's ghosts is recorded
   const bool delivered = execute<ghosts_hold>(n, big(n), 3.0).get();

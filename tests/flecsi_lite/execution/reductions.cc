@@ -17,7 +17,8 @@ double rank_value() { return static_cast<double>(runtime::rank() + 1); }
 long rank_count() { return 1; }
 // Values whose naive sum depends on the grouping: 1e16, 1, -1e16, 1, ... over 64 entities.
 void fill(const narray& n, field<double>::accessor<wo> f) {
-  for (std::size_t i = 0; i < f.size(); ++i) f(i) = n.global_index(i) % 2 ? 1.0 : (n.global_index(i) % 4 ? -1e16 : 1e16);
+  for (std::size_t i = 0; i < f.size(); ++i)
+    f(i) = n.global_index(i) % 2 ? 1.0 : (n.global_index(i) % 4 ? -1e16 : 1e16);
 }
 util::exact_sum local_exact(field<double>::accessor<ro> f) {
   util::exact_sum s;
@@ -44,7 +45,7 @@ double local_plain_with_ghosts(field<double>::accessor<ro, ro> f) {
   return s;
 }
 double thousand_times_rank() { return 1000.0 * (runtime::rank() + 1); }
-} // namespace
+}  // namespace
 
 TEST_CASE("sum, min and max over ranks") {
   const int p = runtime::size();
@@ -95,7 +96,8 @@ TEST_CASE("reductions start their collectives in program order on every rank") {
   narray n(64, 2, true);
   execute<fill>(n, value(n));
   auto delayed = execute<local_plain_with_ghosts>(value(n));  // waits for a ghost copy
-  auto first = runtime::rank() == 0 ? reduce<one_after, reduction::sum>(delayed) : reduce<one_after, reduction::sum>(0.0);
+  auto first =
+    runtime::rank() == 0 ? reduce<one_after, reduction::sum>(delayed) : reduce<one_after, reduction::sum>(0.0);
   auto second = reduce<thousand_times_rank, reduction::sum>();
   const int p = runtime::size();
   CHECK(second.get() == 1000.0 * p * (p + 1) / 2);

@@ -49,7 +49,7 @@ void make_ghosts_stale(narray& n) {
   wait_all();
   execute<set>(a(n), 2.0);
 }
-} // namespace
+}  // namespace
 
 // Read-only access is const: writing through it does not compile.
 static_assert(std::is_same_v<decltype(*std::declval<tracked<tally>::accessor<ro>>()), const tally&>);

@@ -2,9 +2,9 @@
 // header splash recognizes, labels at least four spaces apart, and every value read back exactly.
 #include <catch2/catch.hpp>
 
-#include "tests/support/collective_checks.hh"
 #include "flecsi_lite/io/ascii_columns.hh"
 #include "flecsi_lite/io/h5part_writer.hh"
+#include "tests/support/collective_checks.hh"
 
 #include <cstdlib>
 #include <sstream>
@@ -47,7 +47,7 @@ std::vector<std::string> words(const std::string& line) {
   for (std::string word; in >> word;) result.push_back(word);
   return result;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a step exports to splash's ASCII columns with exact values") {
   const std::string path = file_name("sph_columns");
@@ -84,12 +84,15 @@ TEST_CASE("a step exports to splash's ASCII columns with exact values") {
   for (std::string row; std::getline(lines, row); ++rows) {
     const auto fields = words(row);
     REQUIRE(fields.size() == columns.size());
-    for (std::size_t c = 0; c + 1 < columns.size(); ++c) CHECK(std::strtod(fields[c].c_str(), nullptr) == value_of(c, rows));
+    for (std::size_t c = 0; c + 1 < columns.size(); ++c)
+      CHECK(std::strtod(fields[c].c_str(), nullptr) == value_of(c, rows));
     CHECK(std::strtoll(fields.back().c_str(), nullptr, 10) == 1000000007LL * static_cast<long long>(rows));
   }
   CHECK(rows == in.particle_count(0));
 
-  CHECK_THAT(error_message<missing_dataset_error>([&] { write_ascii_columns(in, 0, {"x", "rhoo"}, text); }),
+  CHECK_THAT(error_message<missing_dataset_error>([&] {
+               write_ascii_columns(in, 0, {"x", "rhoo"}, text);
+             }),
              Catch::Contains("no dataset 'rhoo'; did you mean 'rho'?"));
   CHECK_THAT(error_message<missing_step_error>([&] { write_ascii_columns(in, 3, {"x"}, text); }),
              Catch::Contains("has no step 3"));

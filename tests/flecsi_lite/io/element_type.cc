@@ -19,8 +19,8 @@ TEST_CASE("C++ types map to element types by kind, size and sign") {
 }
 
 TEST_CASE("HDF5 datatypes are classified whatever their byte order") {
-  for (auto type : {element_type::float64, element_type::float32, element_type::int64,
-                    element_type::uint64, element_type::int32}) {
+  for (auto type :
+       {element_type::float64, element_type::float32, element_type::int64, element_type::uint64, element_type::int32}) {
     CHECK(classify(file_type(type)) == type);
     CHECK(classify(memory_type(type)) == type);
   }

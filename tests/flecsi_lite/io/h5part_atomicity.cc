@@ -3,9 +3,9 @@
 // closing (writer destroyed, or an exception mid-step) never harms a complete file of that name.
 #include <catch2/catch.hpp>
 
-#include "tests/support/collective_checks.hh"
 #include "flecsi_lite/io/h5part_reader.hh"
 #include "flecsi_lite/io/h5part_writer.hh"
+#include "tests/support/collective_checks.hh"
 
 #include <filesystem>
 
@@ -30,7 +30,7 @@ bool all_equal(const h5part_reader& in, int k, double value) {
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, comm());
   return all == 1 && in.particle_count(k) == expected_count();
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("the final name appears only at close; the partial file holds every finished step") {
   const std::string path = file_name("atomic"), snapshot = file_name("atomic_snapshot");

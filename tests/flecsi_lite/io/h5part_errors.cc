@@ -3,9 +3,9 @@
 // HDF5 prints nothing.
 #include <catch2/catch.hpp>
 
-#include "tests/support/collective_checks.hh"
 #include "flecsi_lite/io/h5part_reader.hh"
 #include "flecsi_lite/io/h5part_writer.hh"
+#include "tests/support/collective_checks.hh"
 
 #include <hdf5.h>
 
@@ -37,8 +37,9 @@ void write_broken_layout(const std::string& path) {
     const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     const double values[4] = {1, 2, 3, 4};
     const auto add = [&](const char* group_name, const char* name, int rank_of_space, const hsize_t* dims) {
-      hid_t group = H5Lexists(file, group_name, H5P_DEFAULT) > 0 ? H5Gopen2(file, group_name, H5P_DEFAULT)
-                                                                  : H5Gcreate2(file, group_name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      hid_t group = H5Lexists(file, group_name, H5P_DEFAULT) > 0
+                      ? H5Gopen2(file, group_name, H5P_DEFAULT)
+                      : H5Gcreate2(file, group_name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
       const hid_t space = H5Screate_simple(rank_of_space, dims, nullptr);
       const hid_t set = H5Dcreate2(group, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
       H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values);
@@ -52,7 +53,7 @@ void write_broken_layout(const std::string& path) {
   }
   barrier();
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a missing file, a file that is not HDF5 and a truncated file give clean errors on every rank") {
   const std::string good = file_name("errors_good"), text = file_name("errors_text", ".txt"),
@@ -172,7 +173,7 @@ void write_huge_declared_extent(const std::string& path) {
   }
   barrier();
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a declared extent the file cannot hold is an error before anything is allocated") {
   const std::string path = file_name("errors_huge_extent");
@@ -197,10 +198,15 @@ TEST_CASE("misuse of the writer is an error on every rank and leaves the writer 
   CHECK_THAT(error_message<usage_error>([&] { out.end_step(); }), Contains("end_step: no open step"));
 
   out.begin_step({0, 0, 0});
-  CHECK_THAT(error_message<usage_error>([&] { out.begin_step({1, 1, 1}); }), Contains("step 0 of '" + path + "' is still open"));
+  CHECK_THAT(error_message<usage_error>([&] {
+               out.begin_step({1, 1, 1});
+             }),
+             Contains("step 0 of '" + path + "' is still open"));
   out.write("x", values);
-  CHECK_THAT(error_message<usage_error>([&] { out.write("x", values); }), Contains("dataset 'x' of step 0") && Contains("already written"));
-  CHECK_THAT(error_message<usage_error>([&] { out.write("a/b", values); }), Contains("'a/b' is not a valid dataset name"));
+  CHECK_THAT(error_message<usage_error>([&] { out.write("x", values); }),
+             Contains("dataset 'x' of step 0") && Contains("already written"));
+  CHECK_THAT(error_message<usage_error>([&] { out.write("a/b", values); }),
+             Contains("'a/b' is not a valid dataset name"));
   CHECK_THAT(error_message<layout_error>([&] { out.write("y", std::vector<double>(rank() + 2, 1.0)); }),
              Contains("dataset 'y' of step 0 in '" + path + "' has") && Contains("but the step's other datasets have"));
   if (size() > 1) {
@@ -208,8 +214,10 @@ TEST_CASE("misuse of the writer is an error on every rank and leaves the writer 
     CHECK(same_on_every_rank(message));
     CHECK_THAT(message, Contains("ranks write different datasets"));
     message = error_message<layout_error>([&] {
-      if (rank() == 0) out.write("u", std::vector<std::int32_t>(rank() + 1));
-      else out.write("u", std::vector<std::int64_t>(rank() + 1));
+      if (rank() == 0)
+        out.write("u", std::vector<std::int32_t>(rank() + 1));
+      else
+        out.write("u", std::vector<std::int64_t>(rank() + 1));
     });
     CHECK(same_on_every_rank(message));
     CHECK_THAT(message, Contains("ranks write different datasets (names or element types differ)"));

@@ -2,8 +2,8 @@
 // the global length, with the TimeValue/time/step/dt attributes and the root attributes.
 #include <catch2/catch.hpp>
 
-#include "tests/support/collective_checks.hh"
 #include "flecsi_lite/io/h5part_writer.hh"
+#include "tests/support/collective_checks.hh"
 
 #include <array>
 #include <cstdio>
@@ -41,7 +41,7 @@ void write_layout_file(const std::string& path) {
   }
   out.close();
 }
-} // namespace
+}  // namespace
 
 #if defined(FLECSPH_H5LS) && defined(FLECSPH_H5DUMP)
 TEST_CASE("h5ls and h5dump see exactly the H5Part layout /Step#k/<quantity> with its attributes") {
@@ -53,25 +53,40 @@ TEST_CASE("h5ls and h5dump see exactly the H5Part layout /Step#k/<quantity> with
     const std::string expected =
       "/ Group\n"
       "/Step#0 Group\n"
-      "/Step#0/id Dataset {" + n + "}\n"
-      "/Step#0/x Dataset {" + n + "}\n"
-      "/Step#0/y Dataset {" + n + "}\n"
+      "/Step#0/id Dataset {" +
+      n +
+      "}\n"
+      "/Step#0/x Dataset {" +
+      n +
+      "}\n"
+      "/Step#0/y Dataset {" +
+      n +
+      "}\n"
       "/Step#1 Group\n"
-      "/Step#1/id Dataset {" + n + "}\n"
-      "/Step#1/x Dataset {" + n + "}\n"
-      "/Step#1/y Dataset {" + n + "}\n";
+      "/Step#1/id Dataset {" +
+      n +
+      "}\n"
+      "/Step#1/x Dataset {" +
+      n +
+      "}\n"
+      "/Step#1/y Dataset {" +
+      n + "}\n";
     CHECK(run_command(std::string(FLECSPH_H5LS) + " -r " + path) == expected);
 
     const std::string header = run_command(std::string(FLECSPH_H5DUMP) + " -H " + path);
     for (const std::string& part :
          {std::string("GROUP \"/\" {\n ATTRIBUTE \"NumSteps\" {\n DATATYPE H5T_STD_I64LE\n DATASPACE SCALAR\n }\n"
                       " ATTRIBUTE \"dimension\" {\n DATATYPE H5T_STD_I64LE"),
-          std::string("GROUP \"Step#1\" {\n ATTRIBUTE \"TimeValue\" {\n DATATYPE H5T_IEEE_F64LE\n DATASPACE SCALAR\n }\n"
-                      " ATTRIBUTE \"dt\" {\n DATATYPE H5T_IEEE_F64LE\n DATASPACE SCALAR\n }\n"
-                      " ATTRIBUTE \"step\" {\n DATATYPE H5T_STD_I64LE\n DATASPACE SCALAR\n }\n"
-                      " ATTRIBUTE \"time\" {\n DATATYPE H5T_IEEE_F64LE\n DATASPACE SCALAR\n }\n"
-                      " DATASET \"id\" {\n DATATYPE H5T_STD_U64LE\n DATASPACE SIMPLE { ( " + n + " ) / ( " + n + " ) }\n }\n"
-                      " DATASET \"x\" {\n DATATYPE H5T_IEEE_F64LE\n DATASPACE SIMPLE { ( " + n + " ) / ( " + n + " ) }\n }\n")})
+          std::string(
+            "GROUP \"Step#1\" {\n ATTRIBUTE \"TimeValue\" {\n DATATYPE H5T_IEEE_F64LE\n DATASPACE SCALAR\n }\n"
+            " ATTRIBUTE \"dt\" {\n DATATYPE H5T_IEEE_F64LE\n DATASPACE SCALAR\n }\n"
+            " ATTRIBUTE \"step\" {\n DATATYPE H5T_STD_I64LE\n DATASPACE SCALAR\n }\n"
+            " ATTRIBUTE \"time\" {\n DATATYPE H5T_IEEE_F64LE\n DATASPACE SCALAR\n }\n"
+            " DATASET \"id\" {\n DATATYPE H5T_STD_U64LE\n DATASPACE SIMPLE { ( " +
+            n + " ) / ( " + n +
+            " ) }\n }\n"
+            " DATASET \"x\" {\n DATATYPE H5T_IEEE_F64LE\n DATASPACE SIMPLE { ( " +
+            n + " ) / ( " + n + " ) }\n }\n")})
       CHECK_THAT(header, Catch::Contains(part));
 
     const auto attribute = [&](const std::string& name) {

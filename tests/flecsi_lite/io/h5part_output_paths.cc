@@ -4,11 +4,11 @@
 // commit().
 #include <catch2/catch.hpp>
 
-#include "tests/support/collective_checks.hh"
 #include "flecsi_lite/io/checkpoint.hh"
 #include "flecsi_lite/io/h5part_reader.hh"
 #include "flecsi_lite/io/h5part_writer.hh"
 #include "flecsi_lite/io/output_path.hh"
+#include "tests/support/collective_checks.hh"
 
 #include <sys/stat.h>
 
@@ -46,7 +46,7 @@ void require_refused(const std::string& path, const std::string& kind) {
   CHECK_THROWS_AS(h5part_writer(path), file_error);
   CHECK_FALSE(fs::exists(fs::symlink_status(path + ".partial")));
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("paths that are not regular files are named by what they are") {
   const std::string folder = file_name("kinds", ".folder"), link = file_name("kinds", ".link");
@@ -98,7 +98,8 @@ TEST_CASE("the writer refuses a temporary path that is a symbolic link (HDF5 wou
   remove_files({path});
   if (rank() == 0) fs::create_symlink(target, path + ".partial");
   write_text(target, "not to be overwritten");
-  CHECK_THROWS_WITH(h5part_writer(path), Catch::Contains("temporary file '" + path + ".partial' exists and is a symbolic link"));
+  CHECK_THROWS_WITH(h5part_writer(path),
+                    Catch::Contains("temporary file '" + path + ".partial' exists and is a symbolic link"));
   CHECK(contents(target) == "not to be overwritten");
   CHECK_FALSE(fs::exists(path));
   remove_files({path});

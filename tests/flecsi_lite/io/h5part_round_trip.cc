@@ -3,11 +3,11 @@
 // beyond ten in numeric order; an empty step; appending; checkpoints.
 #include <catch2/catch.hpp>
 
-#include "tests/support/collective_checks.hh"
 #include "flecsi_lite/io/checkpoint.hh"
-#include "flecsi_lite/io/hdf5/h5part_layout.hh"
 #include "flecsi_lite/io/h5part_reader.hh"
 #include "flecsi_lite/io/h5part_writer.hh"
+#include "flecsi_lite/io/hdf5/h5part_layout.hh"
+#include "tests/support/collective_checks.hh"
 
 #include <cstdint>
 #include <filesystem>
@@ -33,7 +33,9 @@ std::uint64_t global_count(int k) { return offset_of(size(), k); }
 // The values of particle g (global index) in step k, one per element type.
 double x_of(std::uint64_t g, int k) { return 0.5 * g + 100.0 * k + 1.0 / 3; }
 std::uint64_t id_of(std::uint64_t g, int k) { return (std::uint64_t{1} << 40) + 7 * g + k; }
-std::int64_t signed_of(std::uint64_t g, int k) { return -static_cast<std::int64_t>(g) * (k + 1) - (std::int64_t{1} << 35); }
+std::int64_t signed_of(std::uint64_t g, int k) {
+  return -static_cast<std::int64_t>(g) * (k + 1) - (std::int64_t{1} << 35);
+}
 float m_of(std::uint64_t g, int k) { return 0.25f * static_cast<float>(g + k); }
 
 // Above the 64 KiB an attribute may take in HDF5's oldest file format.
@@ -87,7 +89,7 @@ void check_part(const h5part_reader& in, int k, slice part) {
     CHECK((offset_of(writer[i], k) <= g && g < offset_of(writer[i], k) + local_count(writer[i], k)));
   }
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a multi-step file of uneven counts reads back exactly, by blocks and by slices") {
   const std::string path = file_name("round_trip");
@@ -245,8 +247,8 @@ TEST_CASE("a restart drops the steps after its iteration, or continues an interr
 TEST_CASE("a checkpoint holds one full-precision step and the run state") {
   const std::string path = file_name("checkpoint", ".chk");
   remove_files({path});
-  const run_state state{{"next_output_time", 0.75}, {"outputs_written", std::int64_t{4}},
-                        {"kernel", std::string("wendland_c2")}};
+  const run_state state{
+    {"next_output_time", 0.75}, {"outputs_written", std::int64_t{4}}, {"kernel", std::string("wendland_c2")}};
   const step_info info{2.0 / 3, 41, 1e-3 / 3};
   const auto write_arrays = [&](h5part_writer& out) {
     const std::uint64_t n = local_count(rank(), 0), first = offset_of(rank(), 0);

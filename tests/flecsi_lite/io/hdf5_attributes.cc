@@ -20,7 +20,7 @@ struct scratch_file {
     std::remove(path.c_str());
   }
 };
-} // namespace
+}  // namespace
 
 TEST_CASE("attributes of every kind read back exactly and can be replaced") {
   scratch_file scratch;
@@ -50,7 +50,8 @@ TEST_CASE("variable-length string and int32 attributes written by other tools ar
   auto text_attribute = attribute_handle(H5Acreate2(root, "origin", type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT));
   H5Awrite(text_attribute.get(), type.get(), &text);
   const int dimension = 2;
-  auto int_attribute = attribute_handle(H5Acreate2(root, "dimension", H5T_STD_I32BE, space.get(), H5P_DEFAULT, H5P_DEFAULT));
+  auto int_attribute =
+    attribute_handle(H5Acreate2(root, "dimension", H5T_STD_I32BE, space.get(), H5P_DEFAULT, H5P_DEFAULT));
   H5Awrite(int_attribute.get(), H5T_NATIVE_INT, &dimension);
   text_attribute.close(), int_attribute.close();
   CHECK(read_attribute(root, "origin", "origin") == attribute_value{std::string("written by h5py")});

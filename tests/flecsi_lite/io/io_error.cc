@@ -14,11 +14,10 @@ void check_kind(failure kind) {
     CHECK(e.kind() == kind);
     CHECK(std::string(e.what()) == "message");
     return;
-  } catch (...) {
-  }
+  } catch (...) {}
   FAIL("wrong exception type for kind " << static_cast<int>(kind));
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("every failure kind is thrown as its own subclass") {
   check_kind<file_error>(failure::file);

@@ -4,10 +4,10 @@
 // when ranks disagree, and the XDMF index of a series of such files.
 #include <catch2/catch.hpp>
 
-#include "tests/support/collective_checks.hh"
 #include "flecsi_lite/io/io_error.hh"
 #include "flecsi_lite/io/snapshot_writer.hh"
 #include "flecsi_lite/io/xdmf_index.hh"
+#include "tests/support/collective_checks.hh"
 
 #include <hdf5.h>
 
@@ -62,7 +62,7 @@ hsize_t attribute_length(hid_t file, const char* object, const char* name) {
   H5Sclose(s), H5Aclose(a);
   return n;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a snapshot holds its groups, N x 3 datasets in rank order and SWIFT-style attributes") {
   const std::string path = file_name("snapshot_layout", ".hdf5");
@@ -125,8 +125,9 @@ TEST_CASE("ranks that disagree, bad names and a folder in the way fail alike on 
   const std::string path = file_name("snapshot_errors", ".hdf5");
   remove_files({path});
   snapshot_writer out(path);
-  const std::string mismatch = error_message<layout_error>(
-    [&] { out.set_attributes("Header", {{"Time", std::vector<double>{double(rank() == size() - 1)}}}); });
+  const std::string mismatch = error_message<layout_error>([&] {
+    out.set_attributes("Header", {{"Time", std::vector<double>{double(rank() == size() - 1)}}});
+  });
   if (size() > 1) CHECK_THAT(mismatch, Catch::Contains("ranks set different attributes"));
   CHECK(same_on_every_rank(mismatch));
   const std::string twice = error_message<usage_error>([&] {
@@ -175,8 +176,9 @@ TEST_CASE("the XDMF index lists every snapshot with its time, points and arrays"
   CHECK_THAT(text.str(), Catch::Contains("Dimensions=\"" + std::to_string(total_rows()) + " 3\""));
   CHECK_FALSE(fs::exists(index + ".partial"));
   // A missing snapshot is an error on every rank, and the index stays as it was.
-  const std::string missing = error_message<file_error>(
-    [&] { write_xdmf_index(comm(), index, {paths[0], file_name("series_absent", ".hdf5")}); });
+  const std::string missing = error_message<file_error>([&] {
+    write_xdmf_index(comm(), index, {paths[0], file_name("series_absent", ".hdf5")});
+  });
   CHECK_THAT(missing, Catch::Contains("no snapshot file"));
   CHECK(same_on_every_rank(missing));
   std::ifstream again(index);

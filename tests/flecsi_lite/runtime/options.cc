@@ -13,7 +13,7 @@ options make() {
   o.positional("parameters", "parameter file");
   return o;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("options parse values, flags, repeats and positionals") {
   auto o = make();

@@ -18,7 +18,8 @@ namespace {
 enum class shape { sphere, cube, torus };
 
 const name_table<shape>& shape_names() {
-  static const name_table<shape> table{"shape", {{"sphere", shape::sphere}, {"cube", shape::cube}, {"torus", shape::torus}}};
+  static const name_table<shape> table{"shape",
+                                       {{"sphere", shape::sphere}, {"cube", shape::cube}, {"torus", shape::torus}}};
   return table;
 }
 
@@ -52,7 +53,10 @@ parameter_block<body_settings> body_parameters(const body_settings& defaults = {
   body.real_list("centre", &body_settings::centre, "centre of the body").length(2);
   body.choice("shape", &body_settings::form, shape_names(), "shape of the body");
   body.real("density", member(&body_settings::matter, &material::density), "density of the material").greater_than(0);
-  body.real("gamma", [](body_settings& s) -> double& { return s.matter.gas.gamma; }, "adiabatic index").greater_than(1);
+  body
+    .real(
+      "gamma", [](body_settings& s) -> double& { return s.matter.gas.gamma; }, "adiabatic index")
+    .greater_than(1);
   body.file("output", &body_settings::output, "output file (none: no output)");
   body.check([](const body_settings& s) {
     if (s.form == shape::torus && s.layers < 2) throw parameter_error("a torus needs layers >= 2");
@@ -66,7 +70,7 @@ parameters parse(const parameter_block<body_settings>& block, const std::string&
   block.declare(schema);
   return parameters::parse(schema, text, "body.par", overrides);
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a block's defaults are the struct's default member initializers") {
   const auto block = body_parameters();
@@ -141,19 +145,21 @@ TEST_CASE("a misspelled choice is a parameter error naming the choices and the n
     parse(block, "shape = sphre\n");
     FAIL("no parameter_error");
   } catch (const parameter_error& e) {
-    CHECK_THAT(e.what(), Contains("body.par:1: key 'shape'") && Contains("'sphre' is not one of: sphere, cube, torus") &&
+    CHECK_THAT(e.what(), Contains("body.par:1: key 'shape'") &&
+                           Contains("'sphre' is not one of: sphere, cube, torus") &&
                            Contains("did you mean 'sphere'?"));
   }
   // The table's own lookup says the same, with what the names are of.
-  CHECK_THROWS_WITH(shape_names().value("toru"),
-                    Contains("unknown shape 'toru'") && Contains("one of: sphere, cube, torus") &&
-                      Contains("did you mean 'torus'?"));
+  CHECK_THROWS_WITH(shape_names().value("toru"), Contains("unknown shape 'toru'") &&
+                                                   Contains("one of: sphere, cube, torus") &&
+                                                   Contains("did you mean 'torus'?"));
   CHECK_THROWS_AS(shape_names().value("dodecahedron"), std::invalid_argument);
 }
 
 TEST_CASE("bounds, file names and block checks are enforced") {
   const auto block = body_parameters();
-  CHECK_THROWS_WITH(parse(block, "layers = 11\n"), Contains("key 'layers'") && Contains("11 is out of range (must be in [1, 10])"));
+  CHECK_THROWS_WITH(parse(block, "layers = 11\n"),
+                    Contains("key 'layers'") && Contains("11 is out of range (must be in [1, 10])"));
   CHECK_THROWS_WITH(parse(block, "radius = 0\n"), Contains("0 is out of range (must be > 0)"));
   CHECK(block.read(parse(block, "output = none\n")).output.empty());
   CHECK_THROWS_WITH(block.read(parse(block, "shape = torus\nlayers = 1\n")), Contains("a torus needs layers >= 2"));

@@ -32,7 +32,7 @@ std::string error_of(const std::string& text, const std::vector<std::string>& ov
   FAIL("no parameter_error for:\n" << text);
   return "";
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("an unknown key names the file, the line and the nearest valid key") {
   const auto message = error_of("particles = 10\n# comment\ngama = 1.4\n");
@@ -65,19 +65,21 @@ TEST_CASE("values of the wrong type name the key, its type and the value") {
   CHECK_THAT(error_of("particles = 1.5\n"), Contains("key 'particles' (integer): '1.5' is not an integer"));
   CHECK_THAT(error_of("particles = 1e3\n"), Contains("'1e3' is not an integer"));
   CHECK_THAT(error_of("particles = 99999999999999999999\n"), Contains("out of the range of a 64-bit integer"));
-  CHECK_THAT(error_of("particles = 1\nperiodic = maybe\n"), Contains("key 'periodic' (boolean): 'maybe' is not a boolean"));
+  CHECK_THAT(error_of("particles = 1\nperiodic = maybe\n"),
+             Contains("key 'periodic' (boolean): 'maybe' is not a boolean"));
   CHECK_THAT(error_of("particles = 1\ngamma = 1.4.2\n"), Contains("'1.4.2' is not a real number"));
   CHECK_THAT(error_of("particles = 1\ngamma = inf\n"), Contains("'inf' is not a real number"));
   CHECK_THAT(error_of("particles = 1\ngamma = 1e999\n"), Contains("'1e999' is out of the range of a double"));
-  CHECK_THAT(error_of("particles = 1\nbox = 0, x\n"), Contains("key 'box' (list of reals)") && Contains("element 2 'x'"));
+  CHECK_THAT(error_of("particles = 1\nbox = 0, x\n"),
+             Contains("key 'box' (list of reals)") && Contains("element 2 'x'"));
   CHECK_THAT(error_of("particles = 1\nbox = 0,,1\n"), Contains("element 2 ''"));
   CHECK_THAT(error_of("particles = 1\n", {"gamma=fast"}),
              Contains("command line (--set gamma=fast): key 'gamma' (real): 'fast' is not a real number"));
 }
 
 TEST_CASE("values out of range or not among the choices say what is allowed") {
-  CHECK_THAT(error_of("particles = 1\ngamma = 3.5\n"), Contains("run.par:2: key 'gamma'") &&
-                                                         Contains("3.5 is out of range (must be in [1, 3])"));
+  CHECK_THAT(error_of("particles = 1\ngamma = 3.5\n"),
+             Contains("run.par:2: key 'gamma'") && Contains("3.5 is out of range (must be in [1, 3])"));
   CHECK_THAT(error_of("particles = 1\ncfl = 0\n"), Contains("0 is out of range (must be in (0, 1])"));
   CHECK_NOTHROW(parameters::parse(schema(), "particles = 1\ncfl = 1\ngamma = 3\n", "run.par"));
   CHECK_THAT(error_of("particles = 0\n"), Contains("key 'particles'") && Contains("0 is out of range (must be >= 1)"));
@@ -146,8 +148,7 @@ TEST_CASE("LF, CRLF and lone CR all end lines, with the same line numbers") {
     CHECK_THAT(error_of(text + "gama = 1" + end), Contains("run.par:5: unknown key 'gama'"));
   }
   // A lone CR before CRLF is an empty line of its own.
-  CHECK(parameters::parse(schema(), "particles = 1\r\r\ngamma = 2\r\n", "run.par").origin("gamma") ==
-        "file run.par:3");
+  CHECK(parameters::parse(schema(), "particles = 1\r\r\ngamma = 2\r\n", "run.par").origin("gamma") == "file run.par:3");
 }
 
 TEST_CASE("a value starting with '=' is an error naming file, line and key") {

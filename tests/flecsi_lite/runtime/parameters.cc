@@ -17,12 +17,11 @@ parameter_schema sod_schema() {
   s.integer("particles", "number of particles").at_least(1);
   s.boolean("periodic", "periodic boundaries").default_value(false);
   s.string("output", "output file").default_value("out.h5part");
-  s.choice("kernel", {"cubic_spline", "wendland_c2", "wendland_c4"}, "smoothing kernel")
-    .default_value("cubic_spline");
+  s.choice("kernel", {"cubic_spline", "wendland_c2", "wendland_c4"}, "smoothing kernel").default_value("cubic_spline");
   s.real_list("box", "lower and upper corner along x").default_value({0.0, 1.0}).length(2);
   return s;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a parameter file sets values of every type; comments and blank lines are ignored") {
   const std::string text =
@@ -50,9 +49,12 @@ TEST_CASE("a parameter file sets values of every type; comments and blank lines 
 
 TEST_CASE("booleans, integers, reals and lists accept their usual spellings") {
   auto s = sod_schema();
-  const auto value = [&](const std::string& assignment) { return parameters::parse(s, "particles = 1", "", {assignment}); };
+  const auto value = [&](const std::string& assignment) {
+    return parameters::parse(s, "particles = 1", "", {assignment});
+  };
   for (const char* yes : {"true", "Yes", "ON", "1"}) CHECK(value(std::string("periodic=") + yes).get<bool>("periodic"));
-  for (const char* no : {"false", "no", "Off", "0"}) CHECK_FALSE(value(std::string("periodic=") + no).get<bool>("periodic"));
+  for (const char* no : {"false", "no", "Off", "0"})
+    CHECK_FALSE(value(std::string("periodic=") + no).get<bool>("periodic"));
   CHECK(value("particles=+42").get<long>("particles") == 42);
   CHECK(value("gamma=2e0").get<double>("gamma") == 2.0);
   CHECK(value("gamma=+1.5").get<double>("gamma") == 1.5);
@@ -69,8 +71,8 @@ TEST_CASE("--set overrides are applied after the file, the last one winning") {
 }
 
 TEST_CASE("the resolved text lists every key with its origin and reads back to the same values") {
-  const auto p = parameters::parse(sod_schema(), "gamma = 1.4\nparticles = 10\n", "sod.par",
-                                   {"cfl=0.1", "output=a b.h5part"});
+  const auto p =
+    parameters::parse(sod_schema(), "gamma = 1.4\nparticles = 10\n", "sod.par", {"cfl=0.1", "output=a b.h5part"});
   const std::string text = p.resolved_text();
   CHECK_THAT(text, Catch::Contains("gamma = 1.4") && Catch::Contains("# file sod.par:1"));
   CHECK_THAT(text, Catch::Contains("cfl = 0.1") && Catch::Contains("# command line"));

@@ -2,8 +2,8 @@
 // gets the same values, and the same error for a bad or missing file.
 #include <catch2/catch.hpp>
 
-#include "tests/support/collective_checks.hh"
 #include "flecsi_lite/runtime/parameters.hh"
+#include "tests/support/collective_checks.hh"
 
 #include <fstream>
 
@@ -20,7 +20,7 @@ parameter_schema schema() {
   s.string("output", "output file").default_value("out.h5part");
   return s;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("every rank resolves the same parameters from the file rank 0 reads") {
   const std::string path = file_name("parameters", ".par"), bad = file_name("parameters_bad", ".par");

@@ -28,17 +28,16 @@ int main(int argc, char** argv) {
   for (int r = 0; r < size; ++r) same_node += std::string(all.c_str() + r * MPI_MAX_PROCESSOR_NAME) == name;
 
   const int threads = Kokkos::DefaultHostExecutionSpace().concurrency();
-  const int wanted = expected == "share" ? flecsi_lite::runtime::threads_per_rank(node.cores, node.ranks)
-                                         : std::atoi(expected.c_str());
+  const int wanted =
+    expected == "share" ? flecsi_lite::runtime::threads_per_rank(node.cores, node.ranks) : std::atoi(expected.c_str());
   int node_threads = 0;
   MPI_Allreduce(&threads, &node_threads, 1, MPI_INT, MPI_SUM, flecsi_lite::runtime::communicator());
   bool ok = threads == wanted && node.ranks == same_node && node.cores >= 1;
   // The share never oversubscribes a node that has a core for every rank.
   if (expected == "share" && node.ranks <= node.cores) ok = ok && node_threads <= node.cores * (size / node.ranks);
   if (!ok)
-    std::cerr << "rank " << flecsi_lite::runtime::rank() << ": " << threads << " threads, expected " << wanted
-              << " (" << expected << "; node: " << node.ranks << " ranks of " << same_node << ", " << node.cores
-              << " cores)\n";
+    std::cerr << "rank " << flecsi_lite::runtime::rank() << ": " << threads << " threads, expected " << wanted << " ("
+              << expected << "; node: " << node.ranks << " ranks of " << same_node << ", " << node.cores << " cores)\n";
   int failed = !ok, any = 0;
   MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_MAX, flecsi_lite::runtime::communicator());
   return any;

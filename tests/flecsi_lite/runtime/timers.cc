@@ -42,7 +42,10 @@ TEST_CASE("the covered time counts a nested timer once, sequential ones each") {
   CHECK(nested >= 0.040);
   CHECK(nested <= span + 1e-4);
   CHECK(nested <= timers::wall_seconds());
-  { timers::scoped after("after"); std::this_thread::sleep_for(20ms); }
+  {
+    timers::scoped after("after");
+    std::this_thread::sleep_for(20ms);
+  }
   CHECK(timers::covered_seconds() >= nested + 0.020);
   CHECK(timers::covered_seconds() <= timers::wall_seconds());
   timers::clear();

@@ -19,7 +19,9 @@ TEST_CASE("Poiseuille series: from rest to the parabola", "[analytic][channel]")
   CHECK(poiseuille_velocity(0, 0.1, L, F, nu) == Approx(0).margin(1e-20));
   // At t = 0.2 L^2/nu the first mode dominates the deficit: 32/pi^3 exp(-pi^2 0.2) v_max at the centre.
   const double deficit = vmax - poiseuille_velocity(0.5 * L, 0.2 * L * L / nu, L, F, nu);
-  CHECK(deficit == Approx(32 / std::pow(3.14159265358979, 3) * std::exp(-3.14159265358979 * 3.14159265358979 * 0.2) * vmax).epsilon(1e-3));
+  CHECK(deficit ==
+        Approx(32 / std::pow(3.14159265358979, 3) * std::exp(-3.14159265358979 * 3.14159265358979 * 0.2) * vmax)
+          .epsilon(1e-3));
 }
 
 TEST_CASE("Couette series: from rest to the linear profile", "[analytic][channel]") {

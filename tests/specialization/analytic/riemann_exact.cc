@@ -24,29 +24,78 @@ void check_published(double value, double published, double last_digit) {
 
 struct toro_test {
   riemann_state left, right;
-  double p_star, p_digit, u_star, u_digit, rho_left, rho_left_digit, rho_right,
-    rho_right_digit;
+  double p_star, p_digit, u_star, u_digit, rho_left, rho_left_digit, rho_right, rho_right_digit;
   wave_kind left_wave, right_wave;
 };
 
 constexpr double gamma_air = 1.4;
 
-} // namespace
+}  // namespace
 
 TEST_CASE("Toro's Tests 1-5: star pressure, velocity and densities", "[riemann]") {
   using wave = wave_kind;
   // Toro (2009), Table 4.1 (initial data), Table 4.2 (p*, u*), Table 4.3 (rho*L, rho*R).
   const toro_test tests[] = {
-    {{1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 0.30313, 1e-5, 0.92745, 1e-5, 0.42632, 1e-5, 0.26557,
-     1e-5, wave::rarefaction, wave::shock},
-    {{1.0, -2.0, 0.4}, {1.0, 2.0, 0.4}, 0.00189, 1e-5, 0.0, 1e-5, 0.02185, 1e-5, 0.02185, 1e-5,
-     wave::rarefaction, wave::rarefaction},
-    {{1.0, 0.0, 1000.0}, {1.0, 0.0, 0.01}, 460.894, 1e-3, 19.5975, 1e-4, 0.57506, 1e-5,
-     5.99924, 1e-5, wave::rarefaction, wave::shock},
-    {{1.0, 0.0, 0.01}, {1.0, 0.0, 100.0}, 46.0950, 1e-4, -6.19633, 1e-5, 5.99242, 1e-5, 0.57511,
-     1e-5, wave::shock, wave::rarefaction},
-    {{5.99924, 19.5975, 460.894}, {5.99242, -6.19633, 46.0950}, 1691.64, 1e-2, 8.68975, 1e-5,
-     14.2823, 1e-4, 31.0426, 1e-4, wave::shock, wave::shock},
+    {{1.0, 0.0, 1.0},
+     {0.125, 0.0, 0.1},
+     0.30313,
+     1e-5,
+     0.92745,
+     1e-5,
+     0.42632,
+     1e-5,
+     0.26557,
+     1e-5,
+     wave::rarefaction,
+     wave::shock},
+    {{1.0, -2.0, 0.4},
+     {1.0, 2.0, 0.4},
+     0.00189,
+     1e-5,
+     0.0,
+     1e-5,
+     0.02185,
+     1e-5,
+     0.02185,
+     1e-5,
+     wave::rarefaction,
+     wave::rarefaction},
+    {{1.0, 0.0, 1000.0},
+     {1.0, 0.0, 0.01},
+     460.894,
+     1e-3,
+     19.5975,
+     1e-4,
+     0.57506,
+     1e-5,
+     5.99924,
+     1e-5,
+     wave::rarefaction,
+     wave::shock},
+    {{1.0, 0.0, 0.01},
+     {1.0, 0.0, 100.0},
+     46.0950,
+     1e-4,
+     -6.19633,
+     1e-5,
+     5.99242,
+     1e-5,
+     0.57511,
+     1e-5,
+     wave::shock,
+     wave::rarefaction},
+    {{5.99924, 19.5975, 460.894},
+     {5.99242, -6.19633, 46.0950},
+     1691.64,
+     1e-2,
+     8.68975,
+     1e-5,
+     14.2823,
+     1e-4,
+     31.0426,
+     1e-4,
+     wave::shock,
+     wave::shock},
   };
   int number = 1;
   for (const auto& test : tests) {
@@ -86,9 +135,10 @@ TEST_CASE("Sod shock satisfies the Rankine-Hugoniot conditions", "[riemann]") {
   CHECK(S < behind.v + std::sqrt(gamma_air * behind.P / behind.rho));
 }
 
-TEST_CASE("Sod rarefaction is isentropic with a constant Riemann invariant; contact is a "
-          "pure density jump",
-          "[riemann]") {
+TEST_CASE(
+  "Sod rarefaction is isentropic with a constant Riemann invariant; contact is a "
+  "pure density jump",
+  "[riemann]") {
   const riemann_state left{1.0, 0.0, 1.0}, right{0.125, 0.0, 0.1};
   const riemann_solution sod = solve_riemann_problem(left, right, gamma_air);
   const wave_speeds& speeds = sod.speeds();
@@ -127,20 +177,17 @@ TEST_CASE("sampled Sod profile conserves mass, momentum and energy", "[riemann]"
   auto integral = [&](auto density_of) {
     // Panels end at every wave edge so that the rule sees only smooth pieces.
     const wave_speeds& w = sod.speeds();
-    const double edges[] = {-1.0,         w.left_head * t, w.left_tail * t, w.contact * t,
-                            w.right_head * t, 1.0};
+    const double edges[] = {-1.0, w.left_head * t, w.left_tail * t, w.contact * t, w.right_head * t, 1.0};
     const gauss_legendre_rule rule(10);
     double sum = 0.0;
     for (int i = 0; i + 1 < 6; ++i)
-      sum += integrate([&](double x) { return density_of(sod.at(x, t)); }, edges[i],
-                       edges[i + 1], 8, rule);
+      sum += integrate([&](double x) { return density_of(sod.at(x, t)); }, edges[i], edges[i + 1], 8, rule);
     return sum;
   };
   const double mass = integral([](const riemann_state& q) { return q.rho; });
   const double momentum = integral([](const riemann_state& q) { return q.rho * q.v; });
-  const double energy = integral([](const riemann_state& q) {
-    return 0.5 * q.rho * q.v * q.v + q.P / (gamma_air - 1.0);
-  });
+  const double energy =
+    integral([](const riemann_state& q) { return 0.5 * q.rho * q.v * q.v + q.P / (gamma_air - 1.0); });
   CHECK(mass == Approx(1.0 + 0.125).epsilon(1e-12));
   CHECK(momentum == Approx((left.P - right.P) * t).epsilon(1e-12));
   CHECK(energy == Approx((1.0 + 0.1) / (gamma_air - 1.0)).epsilon(1e-12));
@@ -171,8 +218,7 @@ TEST_CASE("vacuum: generated between two receding gases, and given on one side",
   CHECK(middle.P / std::pow(middle.rho, gamma) == Approx(1.0).epsilon(1e-12));  // isentropic
   // The mirror image gives the mirrored solution.
   const riemann_solution mirror = solve_riemann_problem(nothing, gas, gamma);
-  for (double s : {-5.0, -2.0, -0.3, 0.0, 1.1, 3.0})
-    CHECK(mirror.sample(s).rho == Approx(expansion.sample(-s).rho));
+  for (double s : {-5.0, -2.0, -0.3, 0.0, 1.1, 3.0}) CHECK(mirror.sample(s).rho == Approx(expansion.sample(-s).rho));
 }
 
 TEST_CASE("invalid Riemann data is rejected", "[riemann]") {
@@ -181,7 +227,6 @@ TEST_CASE("invalid Riemann data is rejected", "[riemann]") {
   CHECK_THROWS_AS(solve_riemann_problem({-1.0, 0.0, 1.0}, good, 1.4), std::invalid_argument);
   CHECK_THROWS_AS(solve_riemann_problem(good, {1.0, 0.0, -0.1}, 1.4), std::invalid_argument);
   CHECK_THROWS_AS(solve_riemann_problem(good, {0.0, 0.0, 1.0}, 1.4), std::invalid_argument);
-  CHECK_THROWS_AS(solve_riemann_problem({0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 1.4),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(solve_riemann_problem({0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 1.4), std::invalid_argument);
   CHECK_THROWS_AS(solve_riemann_problem(good, {1.0, NAN, 1.0}, 1.4), std::invalid_argument);
 }

@@ -44,14 +44,12 @@ TEST_CASE("polytrope: P = K rho^Gamma, c^2 = dP/drho, consistent u", "[eos]") {
   CHECK(polytrope.pressure(0.1) == Approx(100.0 * 0.01));
   for (double rho : {1e-3, 0.1, 1.0, 4.0}) {
     const double step = 1e-6 * rho;
-    const double dP_drho = (polytrope.pressure(rho + step) - polytrope.pressure(rho - step)) /
-                           (2.0 * step);
+    const double dP_drho = (polytrope.pressure(rho + step) - polytrope.pressure(rho - step)) / (2.0 * step);
     const double c = polytrope.sound_speed(rho);
     CHECK(c * c == Approx(dP_drho).epsilon(1e-8));
     CHECK(c * c == Approx(polytrope.polytropic_exponent * polytrope.pressure(rho) / rho));
     const double du_drho =
-      (polytrope.internal_energy(rho + step) - polytrope.internal_energy(rho - step)) /
-      (2.0 * step);
+      (polytrope.internal_energy(rho + step) - polytrope.internal_energy(rho - step)) / (2.0 * step);
     CHECK(du_drho == Approx(polytrope.pressure(rho) / (rho * rho)).epsilon(1e-8));
   }
   // A polytrope is an ideal gas on one adiabat: with gamma = Gamma and its own u, same P and c.

@@ -33,14 +33,12 @@ struct binary {
     return sum;
   }
 };
-} // namespace
+}  // namespace
 
 TEST_CASE("Ï_ij from positions, velocities and accelerations is the second derivative of I_ij", "[gw]") {
   // A particle on an arbitrary smooth (non-circular) trajectory.
   const auto x = [](double t) { return vec{std::cos(1.3 * t) + 0.2 * t, 0.5 * std::sin(0.7 * t), t * t - 0.3}; };
-  const auto v = [](double t) {
-    return vec{-1.3 * std::sin(1.3 * t) + 0.2, 0.35 * std::cos(0.7 * t), 2 * t};
-  };
+  const auto v = [](double t) { return vec{-1.3 * std::sin(1.3 * t) + 0.2, 0.35 * std::cos(0.7 * t), 2 * t}; };
   const auto a = [](double t) { return vec{-1.69 * std::cos(1.3 * t), -0.245 * std::sin(0.7 * t), 2.0}; };
   const double m = 2.5;
   const auto inertia = [&](double t) {
@@ -74,8 +72,10 @@ TEST_CASE("a circular binary: amplitude 4 G^2 mu M / (c^4 a d) at twice the orbi
     largest_cross = std::max(largest_cross, std::fabs(h.cross));
     CHECK(std::hypot(h.plus, h.cross) == Approx(expected).epsilon(1e-10));
     const double phase = std::atan2(h.cross, h.plus);
-    if (n == 0) first = unwrapped = phase;
-    else unwrapped += std::remainder(phase - previous, 2 * std::acos(-1.0));
+    if (n == 0)
+      first = unwrapped = phase;
+    else
+      unwrapped += std::remainder(phase - previous, 2 * std::acos(-1.0));
     previous = phase;
   }
   CHECK(largest_plus == Approx(expected).epsilon(0.01));

@@ -38,7 +38,7 @@ double integrated_mass(double q) {
                                         std::min(q, edges[k + 1]), 1, rule);
   return 4.0 * pi * Shape::template normalization<3>() * sum;
 }
-} // namespace
+}  // namespace
 
 #define ALL_SHAPES cubic_spline_shape, wendland_c2_shape, wendland_c4_shape, wendland_c6_shape
 
@@ -51,8 +51,7 @@ TEMPLATE_TEST_CASE("the softening's polynomial pieces are the kernel's shape", "
   }
 }
 
-TEMPLATE_TEST_CASE("g r^2 is the kernel's mass within r, 1 beyond the support", "[gravity][softening]",
-                   ALL_SHAPES) {
+TEMPLATE_TEST_CASE("g r^2 is the kernel's mass within r, 1 beyond the support", "[gravity][softening]", ALL_SHAPES) {
   using soft = softened_gravity<TestType>;
   CHECK(soft::mass_fraction(2.0) == 1.0);
   CHECK(soft::mass_fraction(2.0 * (1 - 1e-15)) == Approx(1.0).margin(1e-14));

@@ -13,18 +13,15 @@ using namespace flecsph::physics;
 namespace {
 
 /// Surface of the unit sphere in D dimensions: 2, 2 pi, 4 pi.
-double unit_sphere_surface(int dimension) {
-  return dimension == 1 ? 2.0 : (dimension == 2 ? 2.0 * pi : 4.0 * pi);
-}
+double unit_sphere_surface(int dimension) { return dimension == 1 ? 2.0 : (dimension == 2 ? 2.0 * pi : 4.0 * pi); }
 
 constexpr double h = 0.7;  // a smoothing length that is not 1, so powers of h matter
 
-} // namespace
+}  // namespace
 
-#define ALL_KERNELS                                                                           \
-  cubic_spline<1>, cubic_spline<2>, cubic_spline<3>, wendland_c2<1>, wendland_c2<2>,         \
-    wendland_c2<3>, wendland_c4<1>, wendland_c4<2>, wendland_c4<3>, wendland_c6<1>,          \
-    wendland_c6<2>, wendland_c6<3>
+#define ALL_KERNELS                                                                                                  \
+  cubic_spline<1>, cubic_spline<2>, cubic_spline<3>, wendland_c2<1>, wendland_c2<2>, wendland_c2<3>, wendland_c4<1>, \
+    wendland_c4<2>, wendland_c4<3>, wendland_c6<1>, wendland_c6<2>, wendland_c6<3>
 
 TEMPLATE_TEST_CASE("kernel integrates to one over R^D", "[kernels]", ALL_KERNELS) {
   using kernel = TestType;
@@ -33,13 +30,11 @@ TEMPLATE_TEST_CASE("kernel integrates to one over R^D", "[kernels]", ALL_KERNELS
   // spline changes polynomial, so the 20-point rule is exact on each piece.
   const flecsph::analytic::gauss_legendre_rule rule(20);
   const double integral = flecsph::analytic::integrate(
-    [](double r) { return kernel::value(r, h) * unit_sphere_surface(D) * std::pow(r, D - 1); },
-    0.0, 2.0 * h, 64, rule);
+    [](double r) { return kernel::value(r, h) * unit_sphere_surface(D) * std::pow(r, D - 1); }, 0.0, 2.0 * h, 64, rule);
   CHECK(integral == Approx(1.0).epsilon(1e-12));
 }
 
-TEMPLATE_TEST_CASE("kernel is non-negative, decreasing and zero from 2h on", "[kernels]",
-                   ALL_KERNELS) {
+TEMPLATE_TEST_CASE("kernel is non-negative, decreasing and zero from 2h on", "[kernels]", ALL_KERNELS) {
   using kernel = TestType;
   for (int i = 0; i <= 1000; ++i) {
     const double r = 2.5 * h * i / 1000.0;
@@ -61,13 +56,11 @@ TEMPLATE_TEST_CASE("kernel is non-negative, decreasing and zero from 2h on", "[k
   CHECK(std::fabs(kernel::radial_derivative(near_edge, h)) < 1e-8 * kernel::value(0.0, h) / h);
 }
 
-TEMPLATE_TEST_CASE("kernel and its derivative are continuous at q = 1", "[kernels]",
-                   ALL_KERNELS) {
+TEMPLATE_TEST_CASE("kernel and its derivative are continuous at q = 1", "[kernels]", ALL_KERNELS) {
   using kernel = TestType;
   const double below = h * (1.0 - 1e-12), above = h * (1.0 + 1e-12);
   CHECK(kernel::value(below, h) == Approx(kernel::value(above, h)).epsilon(1e-10));
-  CHECK(kernel::radial_derivative(below, h) ==
-        Approx(kernel::radial_derivative(above, h)).epsilon(1e-10));
+  CHECK(kernel::radial_derivative(below, h) == Approx(kernel::radial_derivative(above, h)).epsilon(1e-10));
   // (dW/dh vanishes at q = 1 for the 3D cubic spline, hence an absolute margin.)
   CHECK(kernel::h_derivative(below, h) ==
         Approx(kernel::h_derivative(above, h)).margin(1e-10 * kernel::value(0.0, h) / h));
@@ -85,13 +78,11 @@ TEMPLATE_TEST_CASE("kernel derivatives match finite differences", "[kernels]", A
     const double dW_dh = (kernel::value(r, h + step) - kernel::value(r, h - step)) / (2 * step);
     CHECK(kernel::radial_derivative(r, h) == Approx(dW_dr).margin(1e-7 * scale));
     CHECK(kernel::h_derivative(r, h) == Approx(dW_dh).margin(1e-7 * scale));
-    CHECK(kernel::gradient_factor(r, h) * r ==
-          Approx(kernel::radial_derivative(r, h)).epsilon(1e-13));
+    CHECK(kernel::gradient_factor(r, h) * r == Approx(kernel::radial_derivative(r, h)).epsilon(1e-13));
   }
 }
 
-TEMPLATE_TEST_CASE("gradient factor is finite at r = 0 and W is smooth there", "[kernels]",
-                   ALL_KERNELS) {
+TEMPLATE_TEST_CASE("gradient factor is finite at r = 0 and W is smooth there", "[kernels]", ALL_KERNELS) {
   using kernel = TestType;
   const double at_zero = kernel::gradient_factor(0.0, h);
   CHECK(std::isfinite(at_zero));
@@ -99,8 +90,7 @@ TEMPLATE_TEST_CASE("gradient factor is finite at r = 0 and W is smooth there", "
   CHECK(at_zero == Approx(kernel::gradient_factor(1e-7 * h, h)).epsilon(1e-5));
   CHECK(kernel::radial_derivative(0.0, h) == 0.0);
   // dW/dh at r = 0 is -D W(0)/h (W(0) = sigma / h^D).
-  CHECK(kernel::h_derivative(0.0, h) ==
-        Approx(-kernel::dimension * kernel::value(0.0, h) / h).epsilon(1e-14));
+  CHECK(kernel::h_derivative(0.0, h) == Approx(-kernel::dimension * kernel::value(0.0, h) / h).epsilon(1e-14));
 }
 
 TEST_CASE("cubic spline has the seed's normalization and shape", "[kernels]") {

@@ -36,25 +36,22 @@ density_sums lattice_sums(double h, double spacing, double m) {
   return sums;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("h-rho relation and its inverse", "[smoothing_length]") {
   CHECK(smoothing_length_from_density<1>(0.01, 1.0, 1.2) == Approx(0.012));
   CHECK(smoothing_length_from_density<2>(0.01, 1.0, 1.2) == Approx(0.12));
   CHECK(smoothing_length_from_density<3>(0.001, 1.0, 1.2) == Approx(0.12));
   for (double rho : {0.1, 1.0, 7.0}) {
-    CHECK(density_from_smoothing_length<1>(0.3, smoothing_length_from_density<1>(0.3, rho, 1.3),
-                                           1.3) == Approx(rho));
-    CHECK(density_from_smoothing_length<2>(0.3, smoothing_length_from_density<2>(0.3, rho, 1.3),
-                                           1.3) == Approx(rho));
-    CHECK(density_from_smoothing_length<3>(0.3, smoothing_length_from_density<3>(0.3, rho, 1.3),
-                                           1.3) == Approx(rho));
+    CHECK(density_from_smoothing_length<1>(0.3, smoothing_length_from_density<1>(0.3, rho, 1.3), 1.3) == Approx(rho));
+    CHECK(density_from_smoothing_length<2>(0.3, smoothing_length_from_density<2>(0.3, rho, 1.3), 1.3) == Approx(rho));
+    CHECK(density_from_smoothing_length<3>(0.3, smoothing_length_from_density<3>(0.3, rho, 1.3), 1.3) == Approx(rho));
   }
 }
 
-TEMPLATE_TEST_CASE("Newton-Raphson converges on a lattice to h = eta (m/rho)^(1/D)",
-                   "[smoothing_length]", cubic_spline<1>, cubic_spline<2>, cubic_spline<3>,
-                   wendland_c2<1>, wendland_c2<2>, wendland_c2<3>, wendland_c6<3>) {
+TEMPLATE_TEST_CASE("Newton-Raphson converges on a lattice to h = eta (m/rho)^(1/D)", "[smoothing_length]",
+                   cubic_spline<1>, cubic_spline<2>, cubic_spline<3>, wendland_c2<1>, wendland_c2<2>, wendland_c2<3>,
+                   wendland_c6<3>) {
   using kernel = TestType;
   constexpr int D = kernel::dimension;
   // Wendland kernels need more neighbours than the cubic spline for a small lattice summation
@@ -68,8 +65,7 @@ TEMPLATE_TEST_CASE("Newton-Raphson converges on a lattice to h = eta (m/rho)^(1/
     double h = start * h_expected;
     int iterations = 0;
     density_sums sums = lattice_sums<kernel>(h, spacing, m);
-    while (std::fabs(smoothing_length_residual<D>(h, sums.rho, m, eta)) > 1e-13 &&
-           iterations < 50) {
+    while (std::fabs(smoothing_length_residual<D>(h, sums.rho, m, eta)) > 1e-13 && iterations < 50) {
       h = smoothing_length_newton_step<D>(h, sums.rho, sums.drho_dh, m, eta);
       sums = lattice_sums<kernel>(h, spacing, m);
       ++iterations;
@@ -104,9 +100,8 @@ TEST_CASE("Omega equals (h / (D rho_h)) df/dh by finite differences", "[smoothin
   // f(h) = rho_sum(h) - rho_h(h) has f'(h) = (D rho_h / h) Omega where rho_sum = rho_h. Use an
   // irregular neighbourhood so that rho_sum really depends on h (Omega != 1).
   using kernel = wendland_c4<3>;
-  const double neighbours[][3] = {{0.0, 0.0, 0.0},    {0.05, 0.01, -0.02}, {-0.03, 0.06, 0.0},
-                                  {0.08, -0.07, 0.04}, {0.0, 0.0, 0.11},    {-0.09, -0.02, 0.05},
-                                  {0.12, 0.1, -0.06}};
+  const double neighbours[][3] = {{0.0, 0.0, 0.0},  {0.05, 0.01, -0.02},  {-0.03, 0.06, 0.0}, {0.08, -0.07, 0.04},
+                                  {0.0, 0.0, 0.11}, {-0.09, -0.02, 0.05}, {0.12, 0.1, -0.06}};
   const double m = 1e-3, eta = 1.2;
   auto sums = [&](double h) {
     density_sums s{0.0, 0.0};

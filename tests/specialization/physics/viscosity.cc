@@ -14,19 +14,17 @@ namespace {
 using vector3 = std::array<double, 3>;
 
 double dot(const vector3& x, const vector3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
-vector3 difference(const vector3& x, const vector3& y) {
-  return {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
-}
+vector3 difference(const vector3& x, const vector3& y) { return {x[0] - y[0], x[1] - y[1], x[2] - y[2]}; }
 
 /// Pi_ab for particles at positions/velocities (x_a, v_a), (x_b, v_b).
-double pair_viscosity(const viscosity_parameters& parameters, const vector3& x_a,
-                      const vector3& v_a, const viscosity_particle& a, const vector3& x_b,
-                      const vector3& v_b, const viscosity_particle& b) {
+double pair_viscosity(const viscosity_parameters& parameters, const vector3& x_a, const vector3& v_a,
+                      const viscosity_particle& a, const vector3& x_b, const vector3& v_b,
+                      const viscosity_particle& b) {
   const vector3 r = difference(x_a, x_b), v = difference(v_a, v_b);
   return artificial_viscosity(parameters, dot(r, v), dot(r, r), a, b);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("viscosity vanishes for receding and for sliding pairs", "[viscosity]") {
   const viscosity_parameters parameters;
@@ -58,8 +56,7 @@ TEST_CASE("viscosity matches a hand computation", "[viscosity]") {
   const viscosity_parameters parameters{1.0, 2.0, 0.01};
   const viscosity_particle a{1.0, 1.0, 0.1}, b{3.0, 2.0, 0.2};
   CHECK(viscosity_mu(0.15, -0.1, 0.01, 0.01) == Approx(-1.466992665036675).epsilon(1e-14));
-  CHECK(artificial_viscosity(parameters, -0.1, 0.01, a, b) ==
-        Approx(3.252311978048912).epsilon(1e-14));
+  CHECK(artificial_viscosity(parameters, -0.1, 0.01, a, b) == Approx(3.252311978048912).epsilon(1e-14));
   // The Balsara factors scale Pi by their mean.
   const viscosity_particle a_switched{1.0, 1.0, 0.1, 0.2}, b_switched{3.0, 2.0, 0.2, 0.6};
   CHECK(artificial_viscosity(parameters, -0.1, 0.01, a_switched, b_switched) ==
@@ -85,8 +82,7 @@ TEST_CASE("signal velocity and Courant time step", "[viscosity]") {
   CHECK(courant_time_step(0.3, 0.01, 9.0) == Approx(0.3 * 0.01 / 9.0));
 }
 
-TEST_CASE("artificial conductivity: hand value, antisymmetry, heat flows downhill",
-          "[viscosity]") {
+TEST_CASE("artificial conductivity: hand value, antisymmetry, heat flows downhill", "[viscosity]") {
   // v_sig^u = sqrt(|2 - 0.5| / 1.5) = 1; term = 0.8 * 1 * (3 - 1) / 1.5 * (-2) = -2.1333...
   CHECK(conductivity_signal_velocity(2.0, 0.5, 1.0, 2.0) == Approx(1.0));
   const double ab = artificial_conductivity(0.8, 3.0, 1.0, 2.0, 0.5, 1.0, 2.0, -2.0);

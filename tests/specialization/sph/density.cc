@@ -18,7 +18,8 @@ double direct_density(sph::simulation<D>& s, std::size_t a, double h, bool perio
   const auto x = flecsi_lite::host_view(f::position()(p));
   const auto m = flecsi_lite::host_view(f::mass()(p));
   double rho = 0;
-  for (std::size_t b = 0; b < p.owned_size(); ++b) rho += m(b) * Kernel::value(norm<D>(image_separation<D>(x(a), x(b), periodic)), h);
+  for (std::size_t b = 0; b < p.owned_size(); ++b)
+    rho += m(b) * Kernel::value(norm<D>(image_separation<D>(x(a), x(b), periodic)), h);
   return rho;
 }
 
@@ -45,7 +46,7 @@ void check_fixed_h(flecsph::physics::kernel_type type, double jitter) {
     CHECK(rho(0) == Approx(1.0).epsilon(0.03));
   }
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("density at fixed h equals the direct kernel sum over all periodic images", "[sph][density]") {
   using namespace flecsph::physics;
@@ -81,8 +82,9 @@ void check_adaptive() {
     CHECK(rho(a) == Approx(direct_density<D, Kernel>(s, a, h(a), true)).epsilon(1e-12));
     // Omega = 1 + h / (D rho) d rho_sum / dh, by a central difference.
     const double step = 1e-5 * h(a);
-    const double derivative = (direct_density<D, Kernel>(s, a, h(a) + step, true) -
-                               direct_density<D, Kernel>(s, a, h(a) - step, true)) / (2 * step);
+    const double derivative =
+      (direct_density<D, Kernel>(s, a, h(a) + step, true) - direct_density<D, Kernel>(s, a, h(a) - step, true)) /
+      (2 * step);
     CHECK(omega(a) == Approx(1.0 + h(a) / (D * rho(a)) * derivative).epsilon(1e-6));
     spread = std::max(spread, std::fabs(h(a) / h(0) - 1));
   }

@@ -76,7 +76,7 @@ void check_conservation(bool periodic, bool adaptive, bool balsara) {
   if (!periodic)
     for (double t : r.torque) CHECK(std::fabs(t) < 1e-14 * r.force_scale);
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("momentum, angular momentum and energy rates vanish to round-off", "[sph][forces]") {
   for (bool adaptive : {false, true}) {
@@ -123,7 +123,8 @@ TEST_CASE("forces at fixed h equal a direct evaluation of the seed's eqs. (1.8)-
   const double gamma = 5.0 / 3.0, alpha = 1, beta = 2, epsilon = 0.01;
   std::vector<double> rho(n, 0.0), P(n), c(n);
   for (std::size_t a = 0; a < n; ++a) {
-    for (std::size_t b = 0; b < n; ++b) rho[a] += m(b) * Kernel::value(norm<2>(image_separation<2>(x(a), x(b), true)), h(a));
+    for (std::size_t b = 0; b < n; ++b)
+      rho[a] += m(b) * Kernel::value(norm<2>(image_separation<2>(x(a), x(b), true)), h(a));
     P[a] = (gamma - 1) * rho[a] * u(a);
     c[a] = std::sqrt(gamma * P[a] / rho[a]);
   }
@@ -137,11 +138,12 @@ TEST_CASE("forces at fixed h equal a direct evaluation of the seed's eqs. (1.8)-
       const sph::vector<2> v_ab{v(a)[0] - v(b)[0], v(a)[1] - v(b)[1]};
       const double r_dot_v = r[0] * v_ab[0] + r[1] * v_ab[1];
       const double h_ab = 0.5 * (h(a) + h(b)), c_ab = 0.5 * (c[a] + c[b]), rho_ab = 0.5 * (rho[a] + rho[b]);
-      const double mu = h_ab * r_dot_v / (distance * distance + epsilon * h_ab * h_ab);        // (1.11)
-      const double Pi = r_dot_v < 0 ? (-alpha * c_ab * mu + beta * mu * mu) / rho_ab : 0.0;   // (1.10)
-      const double dW = Kernel::radial_derivative(distance, h(a)) / distance;                 // grad W = r dW
-      for (int k = 0; k < 2; ++k) dv[k] -= m(b) * (P[a] / (rho[a] * rho[a]) + P[b] / (rho[b] * rho[b]) + Pi) * dW * r[k];  // (1.9)
-      du += m(b) * (P[a] / (rho[a] * rho[a]) + 0.5 * Pi) * r_dot_v * dW;                      // (1.8)
+      const double mu = h_ab * r_dot_v / (distance * distance + epsilon * h_ab * h_ab);      // (1.11)
+      const double Pi = r_dot_v < 0 ? (-alpha * c_ab * mu + beta * mu * mu) / rho_ab : 0.0;  // (1.10)
+      const double dW = Kernel::radial_derivative(distance, h(a)) / distance;                // grad W = r dW
+      for (int k = 0; k < 2; ++k)
+        dv[k] -= m(b) * (P[a] / (rho[a] * rho[a]) + P[b] / (rho[b] * rho[b]) + Pi) * dW * r[k];  // (1.9)
+      du += m(b) * (P[a] / (rho[a] * rho[a]) + 0.5 * Pi) * r_dot_v * dW;                         // (1.8)
     }
     const double scale = std::fabs(dv[0]) + std::fabs(dv[1]) + 1e-3;
     CHECK(std::fabs(acceleration(a)[0] - dv[0]) < 1e-11 * scale);

@@ -18,10 +18,13 @@ constexpr int D = 2;
 
 /// The task the app adds: a uniform external acceleration on the fluid particles.
 void external_acceleration(sph::vector<D> g, sph::ro<sph::particle_kind> kind, sph::rw<sph::vector<D>> acceleration) {
-  flecsi_lite::forall(acceleration.size(), [&](std::size_t a) {
-    if (kind(a) != sph::particle_kind::fluid) return;
-    for (int k = 0; k < D; ++k) acceleration(a)[k] += g[k];
-  }, "test::external_acceleration");
+  flecsi_lite::forall(
+    acceleration.size(),
+    [&](std::size_t a) {
+      if (kind(a) != sph::particle_kind::fluid) return;
+      for (int k = 0; k < D; ++k) acceleration(a)[k] += g[k];
+    },
+    "test::external_acceleration");
 }
 
 struct pushed_run : sph::simulation<D> {
@@ -52,10 +55,12 @@ flecsi_lite::control::control_model<pushed_run> pushed_model(recorder& seen) {
   auto m = sph::make_control_model<pushed_run>();
   m.action("initial_data", "lattice", [](pushed_run& s) { load_lattice(s, s.shape); });
   m.action("initialize", "external_force", push).after("forces");
-  m.action("advance", "external_force", [&seen](pushed_run& s) {
-     push(s);
-     seen.task_visits.push_back({s.step, s.time, seen.advance_runs.back().size() - 1});
-   }).after("forces");
+  m.action("advance", "external_force",
+           [&seen](pushed_run& s) {
+             push(s);
+             seen.task_visits.push_back({s.step, s.time, seen.advance_runs.back().size() - 1});
+           })
+    .after("forces");
   m.observe([&seen](const std::string& point, const std::string& action, const pushed_run& s) {
     if (point != "initialize" && point != "advance") return;
     auto& runs = point == "initialize" ? seen.initialize_runs : seen.advance_runs;
@@ -67,7 +72,7 @@ flecsi_lite::control::control_model<pushed_run> pushed_model(recorder& seen) {
   });
   return m;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a task placed after forces runs there on every rank, every step", "[sph][control]") {
   pushed_run s;
@@ -82,8 +87,8 @@ TEST_CASE("a task placed after forces runs there on every rank, every step", "[s
   m.run(s);
   REQUIRE(s.step == 12);
 
-  const std::vector<std::string> initialize{"search", "density", "equation_of_state", "forces", "external_force",
-                                            "first_time_step", "diagnostics"};
+  const std::vector<std::string> initialize{"search",         "density",         "equation_of_state", "forces",
+                                            "external_force", "first_time_step", "diagnostics"};
   REQUIRE(seen.initialize_runs.size() == 1);
   CHECK(seen.initialize_runs[0] == initialize);
   const std::vector<std::string> advance{"kick_drift", "search",         "density", "equation_of_state",

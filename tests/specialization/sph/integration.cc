@@ -28,7 +28,7 @@ sph::conserved_totals<D> run_box(double courant, double end_time, long steps, bo
   m.run(s);
   return s.totals;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a short run conserves mass exactly, momentum to round-off, energy to O(dt^2)", "[sph][integration]") {
   const lattice shape{12, true, 1.0, 1.0, 0.2, 0.3, 0.3};
@@ -67,7 +67,7 @@ void load_tube(tube_run& s) {
     p.kind = (int(i) < walls || int(i) >= walls + fluid) ? sph::particle_kind::wall : sph::particle_kind::fluid;
   });
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("wall particles stay put; fluid plus wall impulse conserves momentum", "[sph][integration]") {
   using f = sph::fields<1>;
@@ -99,8 +99,8 @@ TEST_CASE("wall particles stay put; fluid plus wall impulse conserves momentum",
       CHECK(x(i)[0] < 1.0);
     }
   }
-  CHECK(fluid_momentum > 1e-3);            // the walls pushed the fluid: its momentum changed
-  CHECK(wall_impulse < -1e-3);             // and took the opposite impulse
+  CHECK(fluid_momentum > 1e-3);  // the walls pushed the fluid: its momentum changed
+  CHECK(wall_impulse < -1e-3);   // and took the opposite impulse
   CHECK(std::fabs(s.totals.momentum[0]) < 1e-15);
   CHECK(std::fabs(s.totals.total - s.initial_totals.total) < 1e-4 * s.initial_totals.total);
 }

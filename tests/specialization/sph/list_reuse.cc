@@ -124,7 +124,8 @@ double worst_density_error(reuse_run& s) {
     double direct = 0;
     for (std::size_t i = 0; i < all.size(); i += D + 1) {
       const sph::vector<D> x_b{all[i], all[i + 1]};
-      direct += all[i + D] * flecsph::physics::cubic_spline<D>::value(norm<D>(image_separation<D>(x(a), x_b, s.periodic)), h(a));
+      direct += all[i + D] *
+                flecsph::physics::cubic_spline<D>::value(norm<D>(image_separation<D>(x(a), x_b, s.periodic)), h(a));
     }
     worst = std::max(worst, std::fabs(rho(a) - direct) / direct);
   }
@@ -180,7 +181,7 @@ sph::list_slack list_slack_now(reuse_run& s) {
     .get()
     .lists;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("lists kept over steps are those of a search now; densities are the direct sums", "[sph][list_reuse]") {
   reuse_run s(0.15, false);

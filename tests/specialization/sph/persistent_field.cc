@@ -71,9 +71,9 @@ void run(tracer_run& s, InitialData initial_data, const std::string& output) {
   s.run.diagnostics_every = 0;
   auto m = sph::make_control_model<tracer_run>();
   m.action("initial_data", "tracer_particles", initial_data);
-  m.action("advance", "tracer_decay", [](tracer_run& state) {
-     flecsi_lite::execute<decay>(state.dt, tracer_fields::tracer(*state.particles));
-   }).after("kick");
+  m.action("advance", "tracer_decay",
+           [](tracer_run& state) { flecsi_lite::execute<decay>(state.dt, tracer_fields::tracer(*state.particles)); })
+    .after("kick");
   m.action("output", "tracer_checkpoint", [](tracer_run& state) {
     if (state.step == state.checkpoint_step) sph::write_restart_checkpoint(state, state.checkpoint, {});
   });
@@ -97,7 +97,7 @@ std::map<std::uint64_t, T> by_id(const std::string& path, const std::string& nam
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
-} // namespace
+}  // namespace
 
 TEST_CASE("a field added in one line reaches the output and survives a restart bitwise", "[sph][persistence]") {
   const std::string ranks = std::to_string(flecsi_lite::runtime::size());
@@ -108,18 +108,24 @@ TEST_CASE("a field added in one line reaches the output and survives a restart b
   tracer_run writing;
   writing.checkpoint = checkpoint;
   writing.checkpoint_step = checkpoint_step;
-  run(writing, [](tracer_run& s) {
-    load_lattice(s, shape);
-    flecsi_lite::execute<label>(tracer_fields::id()(*s.particles), tracer_fields::tracer(*s.particles));
-  }, full);
+  run(
+    writing,
+    [](tracer_run& s) {
+      load_lattice(s, shape);
+      flecsi_lite::execute<label>(tracer_fields::id()(*s.particles), tracer_fields::tracer(*s.particles));
+    },
+    full);
   REQUIRE(writing.step == steps);
 
   tracer_run continuing;
-  run(continuing, [&](tracer_run& s) {
-    set_unit_box(s);
-    sph::read_restart_checkpoint(s, checkpoint);
-    REQUIRE(s.step == checkpoint_step);
-  }, restarted);
+  run(
+    continuing,
+    [&](tracer_run& s) {
+      set_unit_box(s);
+      sph::read_restart_checkpoint(s, checkpoint);
+      REQUIRE(s.step == checkpoint_step);
+    },
+    restarted);
   REQUIRE(continuing.step == steps);
 
   // The output and the checkpoint hold the tracer, as doubles, and every particle kept its own
@@ -131,8 +137,7 @@ TEST_CASE("a field added in one line reaches the output and survives a restart b
   const auto expect_decayed = [](const std::map<std::uint64_t, double>& tracers, double time) {
     REQUIRE(tracers.size() == std::size_t(shape.per_side * shape.per_side));
     REQUIRE(time > 0);
-    for (const auto& [id, value] : tracers)
-      CHECK(value == Approx(label_of(id) * std::exp(-time)).epsilon(1e-14));
+    for (const auto& [id, value] : tracers) CHECK(value == Approx(label_of(id) * std::exp(-time)).epsilon(1e-14));
   };
   expect_decayed(by_id<double>(full, "tracer"), output.step_information(output.last_step()).time);
   expect_decayed(by_id<double>(checkpoint, "tracer"), saved.step_information(0).time);

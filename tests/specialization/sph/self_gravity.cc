@@ -95,8 +95,10 @@ void run_sphere(sphere_run& s, double theta, bool grad_h, long steps,
   auto m = sph::make_control_model<sphere_run>();
   sph::place_gravity(m);
   m.action("initial_data", "sphere", [](sphere_run& state) {
-    if (state.restart_from.empty()) create_sphere(state);
-    else sph::read_restart_checkpoint(state, state.restart_from);
+    if (state.restart_from.empty())
+      create_sphere(state);
+    else
+      sph::read_restart_checkpoint(state, state.restart_from);
   });
   m.action("output", "checkpoint", [](sphere_run& state) {
     if (state.step == state.checkpoint_step) sph::write_restart_checkpoint(state, state.checkpoint, {});
@@ -159,7 +161,7 @@ void write_state(sphere_run& s, const std::string& stem) {
 double relative_energy_change(const sphere_run& s) {
   return std::fabs(s.totals.total - s.initial_totals.total) / std::fabs(s.initial_totals.total);
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("a self-gravitating sphere ends bitwise the same on any rank count", "[sph][gravity]") {
   sphere_run s;
@@ -243,7 +245,7 @@ TEST_CASE("the acceleration criterion of the time step sees gravity", "[sph][gra
   MPI_Allreduce(MPI_IN_PLACE, &courant, 1, MPI_DOUBLE, MPI_MIN, flecsi_lite::runtime::communicator());
   INFO("acceleration bound " << bound << ", Courant bound " << courant << ", dt " << s.dt);
   CHECK(bound < 0.1 * courant);  // reached 0.1 against 5.5
-  CHECK(s.dt == bound);  // the step max_steps stopped before: the next one
+  CHECK(s.dt == bound);          // the step max_steps stopped before: the next one
 }
 
 TEST_CASE("a self-gravitating run restarted from a checkpoint ends bitwise where it would have", "[sph][gravity]") {

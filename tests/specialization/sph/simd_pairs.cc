@@ -42,9 +42,9 @@ void compare_forces(const sph::neighbour_walk<D>& walk, std::size_t owned, const
     sph::vector<D> dv_lanes, dv_one;
     double du_lanes, du_one, signal_lanes, signal_one;
     sph::detail::force_sums<Kernel, Conductivity, GradHGravity, D, simd::pack>(walk, a, in, viscosity, 0.7, dv_lanes,
-                                                                              du_lanes, signal_lanes);
+                                                                               du_lanes, signal_lanes);
     sph::detail::force_sums<Kernel, Conductivity, GradHGravity, D, double>(walk, a, in, viscosity, 0.7, dv_one, du_one,
-                                                                          signal_one);
+                                                                           signal_one);
     for (int k = 0; k < D; ++k) result.add(dv_lanes[k], dv_one[k]);
     result.add(du_lanes, du_one);
     result.add(signal_lanes, signal_one);
@@ -103,8 +103,8 @@ void compare_all(bool periodic) {
   const auto term = flecsi_lite::host_view(f::pressure_term(p));
   const auto u = flecsi_lite::host_view(f::internal_energy(p));
   const auto balsara = flecsi_lite::host_view(f::balsara(p));
-  sph::detail::force_fields<D> in{x.data(),  v.data(),    m.data(), h.data(),       rho.data(),
-                                  P.data(),  cs.data(),   term.data(), u.data(), balsara.data()};
+  sph::detail::force_fields<D> in{x.data(), v.data(),  m.data(),    h.data(), rho.data(),
+                                  P.data(), cs.data(), term.data(), u.data(), balsara.data()};
   std::vector<double> inverse_h;
   sph::detail::inverse_smoothing_lengths(h.data(), h.size(), inverse_h);
   in.inverse_h = inverse_h.data();
@@ -121,7 +121,7 @@ void compare_all(bool periodic) {
   CHECK(forces.different == 0);
   CHECK(density.different == 0);
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("the build's pair loops run on packs of several lanes", "[sph][simd]") {
 #if FLECSPH_HAVE_STD_SIMD

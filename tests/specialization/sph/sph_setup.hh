@@ -25,12 +25,12 @@ inline double hashed_unit(std::uint64_t id, std::uint64_t salt) {
 }
 
 struct lattice {
-  int per_side = 8;          ///< particles per side of the unit box
-  bool periodic = true;      ///< periodic on every axis, else an open box
+  int per_side = 8;      ///< particles per side of the unit box
+  bool periodic = true;  ///< periodic on every axis, else an open box
   double rho0 = 1.0;
   double u0 = 1.0;
-  double jitter = 0.0;       ///< displacement in units of the spacing (uniform in [-j, j])
-  double velocity = 0.0;     ///< random velocity amplitude
+  double jitter = 0.0;         ///< displacement in units of the spacing (uniform in [-j, j])
+  double velocity = 0.0;       ///< random velocity amplitude
   double energy_spread = 0.0;  ///< relative random variation of u
 };
 
@@ -83,4 +83,4 @@ double norm(const sph::vector<D>& r) {
   return std::sqrt(r2);
 }
 
-} // namespace sph_test
+}  // namespace sph_test

@@ -31,7 +31,7 @@ struct split_run : sph::simulation<D> {
     sph::update_neighbours(*this);
   }
 };
-} // namespace
+}  // namespace
 
 TEST_CASE("interior and boundary targets partition the owned particles as the lists say") {
   split_run s;

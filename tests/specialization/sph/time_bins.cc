@@ -96,13 +96,15 @@ TEST_CASE("each particle is kicked by its own step, inactive ones are left alone
       for (std::size_t i = 0; i < p.owned_size(); ++i) {
         smallest = std::min(smallest, bin(i));
         largest = std::max(largest, bin(i));
-        REQUIRE(begin(i) % timeline::ticks_of(bin(i)) == 0);  // aligned
+        REQUIRE(begin(i) % timeline::ticks_of(bin(i)) == 0);       // aligned
         REQUIRE(end(i) - begin(i) == timeline::ticks_of(bin(i)));  // no limiter: nobody is woken
         if (begin(i) != s.clock.now) continue;
         const bool known = records.count(id(i)) > 0;
         record& r = records[id(i)];
-        if (known || step == 0) REQUIRE(r.tiled == begin(i));  // the steps so far tile the timeline from 0
-        else r.tiled = begin(i);  // arrived from another rank in a distribution
+        if (known || step == 0)
+          REQUIRE(r.tiled == begin(i));  // the steps so far tile the timeline from 0
+        else
+          r.tiled = begin(i);  // arrived from another rank in a distribution
         r.v = v(i), r.a = a(i), r.u = u(i), r.du = du(i), r.begin = begin(i), r.length = end(i) - begin(i);
       }
       widest_spread = std::max(widest_spread, largest - smallest);
@@ -206,8 +208,8 @@ TEST_CASE("the limiter wakes particles far above their neighbours' bins", "[time
       violations += limiter_violations(s, 2);
     }
     const long all = violations;  // every rank counted all particles
-    INFO("limiter " << limiter << ": " << all << " inactive particles above a starting neighbour's bin + 2, "
-                    << s.woken << " woken");
+    INFO("limiter " << limiter << ": " << all << " inactive particles above a starting neighbour's bin + 2, " << s.woken
+                    << " woken");
     if (limiter == 4) {
       CHECK(all == 0);
       CHECK(s.woken > 0);
@@ -218,4 +220,4 @@ TEST_CASE("the limiter wakes particles far above their neighbours' bins", "[time
   }
 }
 
-} // namespace
+}  // namespace

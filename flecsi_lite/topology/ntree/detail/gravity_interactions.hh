@@ -72,8 +72,7 @@ void build_gravity_list(const Sources& sources, const Group& group, const Option
       }
     } else {
       // Pushed last child first, so that they are popped in node order.
-      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;)
-        stack.push_back(c);
+      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) stack.push_back(c);
     }
   }
 }
@@ -82,8 +81,8 @@ void build_gravity_list(const Sources& sources, const Group& group, const Option
 /// pair term of both the walk and the direct sum (same operations, so theta = 0 gives the
 /// direct sum bit for bit when both visit the sources in the same order).
 template<int D, class Near>
-inline void add_pair(const point<D>& xi, double hi, const point<D>& xj, double mj, double hj,
-                     const Near& near, point<D>& acceleration, double& potential) {
+inline void add_pair(const point<D>& xi, double hi, const point<D>& xj, double mj, double hj, const Near& near,
+                     point<D>& acceleration, double& potential) {
   point<D> d;
   double r2 = 0;
   for (int k = 0; k < D; ++k) {
@@ -122,8 +121,7 @@ inline constexpr double newtonian_margin = 1 + 1e-9;
 /// multipole_field arithmetic of multipole.hh), then the particles in visit order, added to
 /// running sums from zero. near_factor is gravity_options::near_factor.
 template<int D, class Near>
-inline void sum_gravity_list(const gravity_list<D>& list, double near_factor, const Near& near,
-                             target_block<D>& b) {
+inline void sum_gravity_list(const gravity_list<D>& list, double near_factor, const Near& near, target_block<D>& b) {
   const std::size_t count = b.count;
   for (std::size_t t = 0; t < count; ++t) {
     for (int k = 0; k < D; ++k) b.a[k][t] = 0;
@@ -188,9 +186,8 @@ inline void sum_gravity_list(const gravity_list<D>& list, double near_factor, co
 
 /// The field of `list` at one target (x, h): a block of one.
 template<int D, class Near>
-inline void sum_gravity_list(const gravity_list<D>& list, const point<D>& x, double h,
-                             double near_factor, const Near& near, point<D>& acceleration,
-                             double& potential) {
+inline void sum_gravity_list(const gravity_list<D>& list, const point<D>& x, double h, double near_factor,
+                             const Near& near, point<D>& acceleration, double& potential) {
   target_block<D> block;
   block.count = 1;
   for (int k = 0; k < D; ++k) block.x[k][0] = x[k];
@@ -200,4 +197,4 @@ inline void sum_gravity_list(const gravity_list<D>& list, const point<D>& x, dou
   potential = block.phi[0];
 }
 
-} // namespace flecsi_lite::topology::ntree::detail
+}  // namespace flecsi_lite::topology::ntree::detail

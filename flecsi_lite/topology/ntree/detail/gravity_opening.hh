@@ -16,8 +16,7 @@ namespace flecsi_lite::topology::ntree::detail {
 /// near_factor * max(node h_max, group h_max) of the group's box, so that a softened pair might
 /// lie in it (the box distance never exceeds a pair's distance: the rule is exact).
 template<int D>
-inline bool within_softening(const tree_node<D>& node, const box<D>& group, double group_h_max,
-                             double near_factor) {
+inline bool within_softening(const tree_node<D>& node, const box<D>& group, double group_h_max, double near_factor) {
   const double reach = near_factor * std::max(node.h_max, group_h_max);
   return distance_squared<D>(node.bounds, group) <= reach * reach;
 }
@@ -39,8 +38,7 @@ inline bool inside_widened_cube(const tree_node<D>& node, const box<D>& group) {
 /// M l^2 / r^4 <= alpha |a_old| for every target, r being the shortest distance from the group's
 /// box to the node's centre of mass and |a_old| the group's smallest old acceleration.
 template<int D>
-inline bool relative_accepts(const tree_node<D>& node, const box<D>& group,
-                             double acceleration_min, double alpha) {
+inline bool relative_accepts(const tree_node<D>& node, const box<D>& group, double acceleration_min, double alpha) {
   if (group.intersects(node.bounds) || inside_widened_cube<D>(node, group)) return false;
   const double side = node.bounds.max_extent();
   const double r2 = distance_squared<D>(group, node.center);
@@ -68,9 +66,8 @@ template<int D, class Group, class Options>
 inline bool gravity_accepts(const tree_node<D>& node, const Group& group, const Options& options) {
   if (within_softening<D>(node, group.bounds, group.h_max, options.near_factor)) return false;
   if (options.relative_criterion && group.acceleration_min > 0)
-    return relative_accepts<D>(node, group.bounds, group.acceleration_min,
-                               options.relative_tolerance);
+    return relative_accepts<D>(node, group.bounds, group.acceleration_min, options.relative_tolerance);
   return geometric_accepts<D>(node, group.bounds, options.theta);
 }
 
-} // namespace flecsi_lite::topology::ntree::detail
+}  // namespace flecsi_lite::topology::ntree::detail

@@ -21,24 +21,24 @@ namespace flecsi_lite::topology::ntree::detail {
 /// and the first key of the next non-empty one. Its numbers are global (summed over ranks).
 struct straddling_cell {
   key_type key = root_key;
-  std::uint64_t begin = 0;  ///< global (key, id) index of its first particle
-  std::uint64_t count = 0;  ///< its particles on all ranks
+  std::uint64_t begin = 0;      ///< global (key, id) index of its first particle
+  std::uint64_t count = 0;      ///< its particles on all ranks
   double acceleration_min = 0;  ///< smallest |a_old| of its particles (0 when not given)
-  bool in_tree = false;  ///< a node of the global tree T (every ancestor is split)
-  bool split = false;    ///< T splits it (a node of T with more than bucket_size particles)
+  bool in_tree = false;         ///< a node of the global tree T (every ancestor is split)
+  bool split = false;           ///< T splits it (a node of T with more than bucket_size particles)
 };
 
 /// The straddling cells, sorted by key (hence by level), known identically to every rank.
 class straddling_cells {
-public:
+ public:
   static constexpr std::size_t npos = ~std::size_t{0};
 
   /// Collective: allgather of each rank's first and last key, then one integer and one min
   /// reduction for the cells' counts and smallest old accelerations. keys (sorted), n and
   /// acceleration_old (nullable) are this rank's particles.
   template<int D>
-  void find(const key_type* keys, const double* acceleration_old, std::size_t n,
-            std::size_t bucket_size, MPI_Comm comm);
+  void find(const key_type* keys, const double* acceleration_old, std::size_t n, std::size_t bucket_size,
+            MPI_Comm comm);
 
   std::size_t size() const { return cells_.size(); }
   bool empty() const { return cells_.empty(); }
@@ -46,7 +46,7 @@ public:
   /// Index of the cell with `key`, or npos.
   std::size_t index(key_type key) const;
 
-private:
+ private:
   std::vector<straddling_cell> cells_;
 };
 
@@ -97,7 +97,7 @@ struct top_tree {
   std::vector<tree_node<D>> nodes;
   std::vector<quadrupole<D>> quadrupoles;  ///< per node, when the tree has quadrupoles
   std::vector<std::int32_t> owner;
-  std::vector<std::uint32_t> local;        ///< the node's index in this rank's local tree, or npos
+  std::vector<std::uint32_t> local;  ///< the node's index in this rank's local tree, or npos
   std::vector<point<D>> x;
   std::vector<double> m, h;
   std::size_t nodes_from_others = 0, particles_from_others = 0;
@@ -106,8 +106,8 @@ struct top_tree {
 /// Collective: the top tree from the local tree (built with the straddling cells' split rule);
 /// `with_quadrupoles` as the local tree was built.
 template<int D>
-top_tree<D> build_top_tree(const hashed_tree<D>& local, const straddling_cells& cells, bool with_quadrupoles,
-                           int rank, MPI_Comm comm);
+top_tree<D> build_top_tree(const hashed_tree<D>& local, const straddling_cells& cells, bool with_quadrupoles, int rank,
+                           MPI_Comm comm);
 
 /// This rank's target groups of T (gravity.hh's rule on T's node sizes): groups inside its own
 /// subtrees from its local tree, and a group for each straddling group node where it holds
@@ -144,7 +144,7 @@ struct essential_sources {
 /// tree and the imports into `out` (owned particles first, the local tree's ranges kept).
 template<int D>
 void assemble_essential_tree(const top_tree<D>& top, const hashed_tree<D>& local,
-                             const std::vector<target_group<D>>& groups, const gravity_options& options,
-                             int rank, MPI_Comm comm, essential_sources<D>& out);
+                             const std::vector<target_group<D>>& groups, const gravity_options& options, int rank,
+                             MPI_Comm comm, essential_sources<D>& out);
 
-} // namespace flecsi_lite::topology::ntree::detail
+}  // namespace flecsi_lite::topology::ntree::detail

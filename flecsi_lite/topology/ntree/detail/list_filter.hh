@@ -98,4 +98,4 @@ std::size_t within_reach(const point<D>& x, const std::array<const double*, D>& 
   return count;
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

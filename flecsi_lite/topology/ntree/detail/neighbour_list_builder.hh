@@ -29,12 +29,12 @@ namespace flecsi_lite::topology::ntree {
 /// counts of that pass. The first search of a run thus walks twice, but no search ever holds
 /// its lists more than once (a growing buffer per chunk and a gathered copy held them three times).
 class neighbour_list_builder {
-public:
+ public:
   /// How the entries are written: plain indices, with separate shift codes, or packed.
   enum class entries { plain, separate_shifts, packed };
 
   class chunk {
-  public:
+   public:
     /// Appends `count` entries to row `row` (rows come in ascending order): entry i is
     /// neighbour(i), renamed through `rename` when it is set, under shift code shift(i).
     template<class Neighbour, class Shift>
@@ -65,10 +65,11 @@ public:
 
     /// Appends the one entry b (shift code `code`) to row `row`.
     void append(std::size_t row, std::uint32_t b, shift_code code, entries kind) {
-      append(row, 1, [b](std::size_t) { return b; }, [code](std::size_t) { return code; }, nullptr, kind);
+      append(
+        row, 1, [b](std::size_t) { return b; }, [code](std::size_t) { return code; }, nullptr, kind);
     }
 
-  private:
+   private:
     friend class neighbour_list_builder;
     static constexpr std::size_t no_row = static_cast<std::size_t>(-1);
 
@@ -83,8 +84,10 @@ public:
     }
     // The count of the row just finished goes to counts_ (one write per row, not per entry).
     void start_row(std::size_t row) {
-      if (row_ == no_row) first_row_ = row;
-      else counts_[row_] = size_ - row_begin_;
+      if (row_ == no_row)
+        first_row_ = row;
+      else
+        counts_[row_] = size_ - row_begin_;
       row_ = row;
       row_begin_ = size_;
     }
@@ -168,7 +171,7 @@ public:
   /// those whose lists grew beyond the regions' spare room).
   std::size_t repeated_passes() const { return repeated_passes_; }
 
-private:
+ private:
   // Room for `size` values: the arrays keep their allocation unless it is too small or more
   // than 1/8 too large (std::vector::resize alone would double the capacity).
   template<class T>
@@ -190,4 +193,4 @@ private:
   std::size_t repeated_passes_ = 0;
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

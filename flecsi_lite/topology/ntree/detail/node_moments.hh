@@ -38,8 +38,7 @@ void compute_leaf_moments(Node& node, const point<D>* x, const double* m, const 
   // The moments about the centre of mass: offsets of the particles, viewed as Eigen vectors.
   q->setZero();
   const auto center = as_column_vector<D>(node.center);
-  for (std::uint32_t b = node.begin; b < node.end; ++b)
-    add_point_mass<D>(*q, m[b], as_column_vector<D>(x[b]) - center);
+  for (std::uint32_t b = node.begin; b < node.end; ++b) add_point_mass<D>(*q, m[b], as_column_vector<D>(x[b]) - center);
 }
 
 /// An inner node from its children nodes[node.first_child ..], in that order; `quadrupoles`
@@ -71,4 +70,4 @@ void compute_parent_moments(Node& node, const Node* nodes, const quadrupole<D>* 
     add_shifted<D>(*q, quadrupoles[c], nodes[c].mass, as_column_vector<D>(nodes[c].center) - center);
 }
 
-} // namespace flecsi_lite::topology::ntree::detail
+}  // namespace flecsi_lite::topology::ntree::detail

@@ -15,7 +15,7 @@ namespace flecsi_lite::topology::ntree {
 /// keys stay in the nodes), no allocation per node, a load factor at most 1/2 so that probes
 /// stay short, and cache-friendly probing. The table is built once per tree and only read.
 class node_table {
-public:
+ public:
   static constexpr std::uint32_t npos = ~std::uint32_t{0};
 
   /// Maps key_of(i) to i for every i < n. Precondition: the keys are distinct.
@@ -53,14 +53,12 @@ public:
   std::size_t capacity() const { return slots_.size(); }
   std::size_t bytes() const { return slots_.size() * sizeof(std::uint32_t); }
 
-private:
+ private:
   // Fibonacci hashing: the top bits of key * 2^64/phi spread nearby keys over the table.
-  std::size_t home(key_type key) const {
-    return static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> shift_);
-  }
+  std::size_t home(key_type key) const { return static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> shift_); }
 
   std::vector<std::uint32_t> slots_;
   int shift_ = 64;
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

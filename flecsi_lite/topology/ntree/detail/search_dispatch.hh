@@ -34,7 +34,6 @@ std::uint32_t reachable_shifts(const Node& node, const Target& target, double ta
   }
 }
 
-
 /// Calls body(kind, periodic) with both as compile-time constants (std::integral_constant), so
 /// that the inner loops of a search are compiled once per case without run-time branches.
 template<class Body>
@@ -42,11 +41,15 @@ void dispatch_search(interaction kind, bool periodic, Body&& body) {
   using gather = std::integral_constant<interaction, interaction::gather>;
   using symmetric = std::integral_constant<interaction, interaction::symmetric>;
   if (kind == interaction::gather) {
-    if (periodic) body(gather{}, std::true_type{});
-    else body(gather{}, std::false_type{});
+    if (periodic)
+      body(gather{}, std::true_type{});
+    else
+      body(gather{}, std::false_type{});
   } else {
-    if (periodic) body(symmetric{}, std::true_type{});
-    else body(symmetric{}, std::false_type{});
+    if (periodic)
+      body(symmetric{}, std::true_type{});
+    else
+      body(symmetric{}, std::false_type{});
   }
 }
 
@@ -64,8 +67,7 @@ void check_periodic_reach(const hashed_tree<D>& tree, const domain<D>& space, do
 
 /// True when `F` takes the image shift: apply(target, neighbour, shift).
 template<int D, class F>
-constexpr bool takes_shift =
-  std::is_invocable_v<F&, std::size_t, std::size_t, const point<D>&>;
+constexpr bool takes_shift = std::is_invocable_v<F&, std::size_t, std::size_t, const point<D>&>;
 
 /// Checks a user functor for apply(target, neighbour) or apply(target, neighbour, shift); the
 /// two-argument form cannot place periodic images, so it is refused on a periodic domain.
@@ -76,8 +78,7 @@ void check_functor(const domain<D>& space) {
                 "apply(target, neighbour, shift)");
   if constexpr (!takes_shift<D, F>) {
     if (space.any_periodic())
-      throw std::invalid_argument(
-        "ntree: on a periodic domain apply must take the image shift as third argument");
+      throw std::invalid_argument("ntree: on a periodic domain apply must take the image shift as third argument");
   }
 }
 
@@ -85,13 +86,15 @@ void check_functor(const domain<D>& space) {
 template<int D, class F>
 inline void call_apply(F& apply, std::size_t target, std::size_t neighbour, shift_code code,
                        const std::array<point<D>, shift_code_count<D>>& shifts) {
-  if constexpr (takes_shift<D, F>) apply(target, neighbour, shifts[code]);
-  else apply(target, neighbour);
+  if constexpr (takes_shift<D, F>)
+    apply(target, neighbour, shifts[code]);
+  else
+    apply(target, neighbour);
 }
 
 /// Room for a depth-first walk: at most (children - 1) nodes wait per level, plus the root.
 template<int D>
-constexpr int walk_stack_size = max_level<D> * (children_per_cell<D> - 1) + 2;
+constexpr int walk_stack_size = max_level<D>*(children_per_cell<D> - 1) + 2;
 
 /// An entry of a walk's stack: a node and the image shifts under which it may still matter.
 struct walk_entry {
@@ -105,8 +108,8 @@ struct walk_entry {
 /// first, so that they are popped in key = index order). Children are pushed unconditionally and
 /// kept only if reachable: no branch to mispredict.
 template<int D, class Reachable, class Leaf>
-void walk_reachable_leaves(const search_node<D>* nodes, std::uint32_t root_candidates,
-                           const Reachable& reachable, Leaf&& leaf) {
+void walk_reachable_leaves(const search_node<D>* nodes, std::uint32_t root_candidates, const Reachable& reachable,
+                           Leaf&& leaf) {
   walk_entry stack[walk_stack_size<D>];
   int top = 0;
   const std::uint32_t root_pass = reachable(nodes[0], root_candidates);
@@ -127,4 +130,4 @@ void walk_reachable_leaves(const search_node<D>* nodes, std::uint32_t root_candi
   }
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

@@ -16,16 +16,14 @@ namespace flecsi_lite::topology::ntree {
 /// Nearest float not above `value`.
 inline float float_below(double value) {
   float result = static_cast<float>(value);
-  if (static_cast<double>(result) > value)
-    result = std::nextafter(result, -std::numeric_limits<float>::infinity());
+  if (static_cast<double>(result) > value) result = std::nextafter(result, -std::numeric_limits<float>::infinity());
   return result;
 }
 
 /// Nearest float not below `value`.
 inline float float_above(double value) {
   float result = static_cast<float>(value);
-  if (static_cast<double>(result) < value)
-    result = std::nextafter(result, std::numeric_limits<float>::infinity());
+  if (static_cast<double>(result) < value) result = std::nextafter(result, std::numeric_limits<float>::infinity());
   return result;
 }
 
@@ -41,7 +39,7 @@ struct search_node {
   std::uint32_t begin;
   std::uint32_t end;
   std::uint32_t first_child;
-  std::uint32_t child_count; ///< 0 for a leaf
+  std::uint32_t child_count;  ///< 0 for a leaf
 
   bool is_leaf() const { return child_count == 0; }
 
@@ -82,4 +80,4 @@ struct search_node {
   }
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

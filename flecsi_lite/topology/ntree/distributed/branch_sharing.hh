@@ -5,11 +5,11 @@
 // are EXCLUSIVE, and the copies a rank receives are its GHOSTS.
 #pragma once
 
-#include "flecsi_lite/runtime/context.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/execution/forall.hh"
-#include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
+#include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/periodic.hh"
 
 #include <mpi.h>
 
@@ -61,7 +61,7 @@ double volume(const box<D>& b) {
   for (int k = 0; k < D; ++k) v *= std::max(0.0, b.hi[k] - b.lo[k]);
   return v;
 }
-} // namespace detail
+}  // namespace detail
 
 /// At most `count` nodes of `tree` that together hold all its particles, as branches. From the
 /// root down, the node with the highest priority is replaced by its children while the total
@@ -113,8 +113,10 @@ std::vector<branch<D>> top_branches(const hashed_tree<D>& tree, std::size_t coun
     if (node.is_leaf() || done.size() + open.size() - 1 + node.child_count > count) break;
     open.pop();
     for (std::uint32_t c = node.first_child; c < node.first_child + node.child_count; ++c) {
-      if (tree.node(c).is_leaf()) done.push_back(c);
-      else open.push(c);
+      if (tree.node(c).is_leaf())
+        done.push_back(c);
+      else
+        open.push(c);
     }
   }
   for (; !open.empty(); open.pop()) done.push_back(open.top());
@@ -150,8 +152,8 @@ std::vector<std::vector<branch<D>>> share_branches(const std::vector<branch<D>>&
     total += static_cast<std::size_t>(counts[r]);
   }
   std::vector<branch<D>> all(total);
-  runtime::check_mpi(MPI_Allgatherv(mine.data(), my_count * static_cast<int>(sizeof(branch<D>)), MPI_BYTE,
-                                    all.data(), bytes.data(), offsets.data(), MPI_BYTE, comm),
+  runtime::check_mpi(MPI_Allgatherv(mine.data(), my_count * static_cast<int>(sizeof(branch<D>)), MPI_BYTE, all.data(),
+                                    bytes.data(), offsets.data(), MPI_BYTE, comm),
                      "ntree branch sharing: branches");
   std::vector<std::vector<branch<D>>> result(size);
   for (int r = 0, first = 0; r < size; first += counts[r], ++r)
@@ -165,8 +167,8 @@ std::vector<std::vector<branch<D>>> share_branches(const std::vector<branch<D>>&
 /// pruned with the same tests on their boxes (with their h_max), which never reject a box
 /// holding such a particle.
 template<int D, class Visit>
-void for_each_within_branch(const hashed_tree<D>& tree, const domain<D>& space, const branch<D>& b,
-                            double support, double factor, Visit&& visit) {
+void for_each_within_branch(const hashed_tree<D>& tree, const domain<D>& space, const branch<D>& b, double support,
+                            double factor, Visit&& visit) {
   if (tree.size() == 0) return;
   const auto shifts = space.shift_table();
   const point<D>* x = tree.positions();
@@ -220,8 +222,8 @@ void for_each_within_branch(const hashed_tree<D>& tree, const domain<D>& space, 
 /// support * max(h_a, h_b) can find is among them, periodic images included.
 template<int D>
 std::vector<std::vector<std::size_t>> shared_particles(const hashed_tree<D>& tree, const domain<D>& space,
-                                                       const std::vector<std::vector<branch<D>>>& branches,
-                                                       int me, double support, double factor) {
+                                                       const std::vector<std::vector<branch<D>>>& branches, int me,
+                                                       double support, double factor) {
   const std::size_t ranks = branches.size();
   // One work item per (rank, branch), walked in parallel, each collecting its own hits.
   std::vector<std::pair<std::size_t, std::size_t>> items;
@@ -229,11 +231,14 @@ std::vector<std::vector<std::size_t>> shared_particles(const hashed_tree<D>& tre
     if (static_cast<int>(r) != me)
       for (std::size_t j = 0; j < branches[r].size(); ++j) items.emplace_back(r, j);
   std::vector<std::vector<std::uint32_t>> hits(items.size());
-  flecsi_lite::forall(items.size(), [&](std::size_t w) {
-    const auto [r, j] = items[w];
-    for_each_within_branch<D>(tree, space, branches[r][j], support, factor,
-                              [&hits, w](std::size_t i) { hits[w].push_back(static_cast<std::uint32_t>(i)); });
-  }, "ntree::shared_particles", flecsi_lite::dynamic_schedule{});
+  flecsi_lite::forall(
+    items.size(),
+    [&](std::size_t w) {
+      const auto [r, j] = items[w];
+      for_each_within_branch<D>(tree, space, branches[r][j], support, factor,
+                                [&hits, w](std::size_t i) { hits[w].push_back(static_cast<std::uint32_t>(i)); });
+    },
+    "ntree::shared_particles", flecsi_lite::dynamic_schedule{});
 
   std::vector<std::vector<std::size_t>> result(ranks);
   std::vector<std::uint8_t> marked(tree.size(), 0);
@@ -252,4 +257,4 @@ std::vector<std::vector<std::size_t>> shared_particles(const hashed_tree<D>& tre
   return result;
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

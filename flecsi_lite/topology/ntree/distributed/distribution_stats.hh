@@ -15,19 +15,19 @@ struct distribution_stats {
   double count_imbalance = 1;  ///< max / mean of owned particles per rank
   double work_total = 0;       ///< sum of the balancing weights (the particle count without one)
   double work_max = 0, work_mean = 0;
-  double work_imbalance = 1;   ///< max / mean of the summed weights per rank
-  std::uint64_t moved = 0;     ///< particles that changed rank
+  double work_imbalance = 1;  ///< max / mean of the summed weights per rank
+  std::uint64_t moved = 0;    ///< particles that changed rank
   std::uint64_t ghost_total = 0;
 
   // This rank.
   std::size_t owned = 0;
-  std::size_t exclusive = 0;   ///< owned, needed by no other rank
-  std::size_t shared = 0;      ///< owned, sent to at least one other rank
-  std::size_t ghosts = 0;      ///< copies of other ranks' particles held here
-  std::size_t sent_away = 0;   ///< particles this rank sent to other ranks in the sort
-  std::size_t branches = 0;    ///< top branches this rank shared
+  std::size_t exclusive = 0;           ///< owned, needed by no other rank
+  std::size_t shared = 0;              ///< owned, sent to at least one other rank
+  std::size_t ghosts = 0;              ///< copies of other ranks' particles held here
+  std::size_t sent_away = 0;           ///< particles this rank sent to other ranks in the sort
+  std::size_t branches = 0;            ///< top branches this rank shared
   std::size_t bytes_per_particle = 0;  ///< bytes moved per particle (all fields)
-  double work = 0;             ///< summed weights of the owned particles
+  double work = 0;                     ///< summed weights of the owned particles
 
   // Phase times on this rank, seconds.
   double time_keys = 0;        ///< bounding box and keys
@@ -40,4 +40,4 @@ struct distribution_stats {
   double time_total = 0;
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

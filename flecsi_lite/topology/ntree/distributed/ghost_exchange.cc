@@ -13,7 +13,7 @@ int checked_int(std::size_t value) {
     throw std::length_error("ntree ghost exchange: too many bytes for one MPI call");
   return static_cast<int>(value);
 }
-} // namespace
+}  // namespace
 
 data::ghost_plan build_sender_plan(std::vector<std::vector<std::size_t>> send_to, MPI_Comm comm) {
   int size = 1;
@@ -45,4 +45,4 @@ std::size_t ghost_count(const data::ghost_plan& plan) {
   return total;
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

@@ -20,4 +20,4 @@ data::ghost_plan build_sender_plan(std::vector<std::vector<std::size_t>> send_to
 /// Number of ghost slots the plan fills.
 std::size_t ghost_count(const data::ghost_plan& plan);
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

@@ -47,8 +47,7 @@ void mark_opened(const top_tree<D>& top, const hashed_tree<D>& local, const grou
     }
     opened[here].store(1, std::memory_order_relaxed);
     const tree_node<D>& node = local.node(here);
-    for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;)
-      stack.push_back(local_bit | c);
+    for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) stack.push_back(local_bit | c);
   }
 }
 
@@ -184,39 +183,43 @@ std::vector<T> exchange_records(const std::vector<std::vector<T>>& outgoing, MPI
   return received;
 }
 
-} // namespace
+}  // namespace
 
 template<int D>
 void assemble_essential_tree(const top_tree<D>& top, const hashed_tree<D>& local,
-                             const std::vector<target_group<D>>& groups, const gravity_options& options,
-                             int rank, MPI_Comm comm, essential_sources<D>& out) {
+                             const std::vector<target_group<D>>& groups, const gravity_options& options, int rank,
+                             MPI_Comm comm, essential_sources<D>& out) {
   int size = 1;
   MPI_Comm_size(comm, &size);
   const bool with_quadrupoles = options.quadrupole;
   // Each group goes only to the ranks owning a subtree root that its walk over the top tree
   // (the same on every rank) reaches and opens: no other rank has anything it needs.
   std::vector<std::vector<int>> needed_by(groups.size());
-  flecsi_lite::forall(groups.size(), [&](std::size_t g) {
-    const group_record<D> group{groups[g].bounds, groups[g].h_max, groups[g].acceleration_min};
-    thread_local std::vector<std::uint32_t> stack;
-    stack.assign(top.nodes.empty() ? 0 : 1, 0);
-    while (!stack.empty()) {
-      const std::uint32_t t = stack.back();
-      stack.pop_back();
-      const tree_node<D>& node = top.nodes[t];
-      if (node.size() == 0 || gravity_accepts<D>(node, group, options)) continue;
-      if (top.owner[t] == -1) {
-        for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) stack.push_back(c);
-      } else if (top.owner[t] != rank) {
-        needed_by[g].push_back(top.owner[t]);
+  flecsi_lite::forall(
+    groups.size(),
+    [&](std::size_t g) {
+      const group_record<D> group{groups[g].bounds, groups[g].h_max, groups[g].acceleration_min};
+      thread_local std::vector<std::uint32_t> stack;
+      stack.assign(top.nodes.empty() ? 0 : 1, 0);
+      while (!stack.empty()) {
+        const std::uint32_t t = stack.back();
+        stack.pop_back();
+        const tree_node<D>& node = top.nodes[t];
+        if (node.size() == 0 || gravity_accepts<D>(node, group, options)) continue;
+        if (top.owner[t] == -1) {
+          for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) stack.push_back(c);
+        } else if (top.owner[t] != rank) {
+          needed_by[g].push_back(top.owner[t]);
+        }
       }
-    }
-    std::sort(needed_by[g].begin(), needed_by[g].end());
-    needed_by[g].erase(std::unique(needed_by[g].begin(), needed_by[g].end()), needed_by[g].end());
-  }, "ntree::gravity_tree::group_destinations", flecsi_lite::dynamic_schedule{});
+      std::sort(needed_by[g].begin(), needed_by[g].end());
+      needed_by[g].erase(std::unique(needed_by[g].begin(), needed_by[g].end()), needed_by[g].end());
+    },
+    "ntree::gravity_tree::group_destinations", flecsi_lite::dynamic_schedule{});
   std::vector<std::vector<group_record<D>>> outgoing(size);
   for (std::size_t g = 0; g < groups.size(); ++g)
-    for (const int r : needed_by[g]) outgoing[r].push_back({groups[g].bounds, groups[g].h_max, groups[g].acceleration_min});
+    for (const int r : needed_by[g])
+      outgoing[r].push_back({groups[g].bounds, groups[g].h_max, groups[g].acceleration_min});
   std::vector<int> group_counts;
   const auto all_groups = exchange_records(outgoing, comm, group_counts);
   out.sent_groups = 0;
@@ -235,10 +238,13 @@ void assemble_essential_tree(const top_tree<D>& top, const hashed_tree<D>& local
     if (s == rank || roots.empty() || group_counts[s] == 0) continue;
     for (std::size_t i = 0; i < local_nodes; ++i) opened[i].store(0, std::memory_order_relaxed);
     const group_record<D>* theirs = all_groups.data() + first;
-    flecsi_lite::forall(static_cast<std::size_t>(group_counts[s]), [&](std::size_t g) {
-      thread_local std::vector<std::uint64_t> stack;
-      mark_opened<D>(top, local, theirs[g], options, rank, opened.get(), stack);
-    }, "ntree::gravity_tree::essential", flecsi_lite::dynamic_schedule{});
+    flecsi_lite::forall(
+      static_cast<std::size_t>(group_counts[s]),
+      [&](std::size_t g) {
+        thread_local std::vector<std::uint64_t> stack;
+        mark_opened<D>(top, local, theirs[g], options, rank, opened.get(), stack);
+      },
+      "ntree::gravity_tree::essential", flecsi_lite::dynamic_schedule{});
     encode_reply<D>(top, local, roots, opened.get(), with_quadrupoles, rank, send);
     send_counts[s] = checked_int(send.size()) - send_offsets[s];
   }
@@ -310,13 +316,13 @@ void assemble_essential_tree(const top_tree<D>& top, const hashed_tree<D>& local
   }
 }
 
-#define FLECSI_LITE_GRAVITY_ESSENTIAL(D)                                                                 \
-  template void assemble_essential_tree<D>(const top_tree<D>&, const hashed_tree<D>&,                    \
-                                           const std::vector<target_group<D>>&, const gravity_options&, \
-                                           int, MPI_Comm, essential_sources<D>&);
+#define FLECSI_LITE_GRAVITY_ESSENTIAL(D)                                                                               \
+  template void assemble_essential_tree<D>(const top_tree<D>&, const hashed_tree<D>&,                                  \
+                                           const std::vector<target_group<D>>&, const gravity_options&, int, MPI_Comm, \
+                                           essential_sources<D>&);
 FLECSI_LITE_GRAVITY_ESSENTIAL(1)
 FLECSI_LITE_GRAVITY_ESSENTIAL(2)
 FLECSI_LITE_GRAVITY_ESSENTIAL(3)
 #undef FLECSI_LITE_GRAVITY_ESSENTIAL
 
-} // namespace flecsi_lite::topology::ntree::detail
+}  // namespace flecsi_lite::topology::ntree::detail

@@ -33,9 +33,9 @@ std::vector<T> allgather_records(const std::vector<T>& mine, MPI_Comm comm, std:
   if (total > static_cast<std::size_t>(INT_MAX))
     throw std::length_error("ntree gravity tree: the gathered records exceed 2 GiB");
   std::vector<T> all(total / sizeof(T));
-  runtime::check_mpi(MPI_Allgatherv(mine.data(), my_bytes, MPI_BYTE, all.data(), bytes.data(), offsets.data(),
-                                    MPI_BYTE, comm),
-                     "ntree gravity tree: records");
+  runtime::check_mpi(
+    MPI_Allgatherv(mine.data(), my_bytes, MPI_BYTE, all.data(), bytes.data(), offsets.data(), MPI_BYTE, comm),
+    "ntree gravity tree: records");
   if (counts) {
     counts->resize(size);
     for (int r = 0; r < size; ++r) (*counts)[r] = bytes[r] / static_cast<int>(sizeof(T));
@@ -62,7 +62,7 @@ void add_common_ancestors(key_type a, key_type b, std::vector<key_type>& out) {
     if (common == root_key) break;
   }
 }
-} // namespace
+}  // namespace
 
 template<int D>
 void straddling_cells::find(const key_type* keys, const double* acceleration_old, std::size_t n,
@@ -97,12 +97,12 @@ void straddling_cells::find(const key_type* keys, const double* acceleration_old
       smallest[i] = acceleration_old ? *std::min_element(acceleration_old + begin, acceleration_old + end) : 0.0;
     }
   }
-  runtime::check_mpi(MPI_Allreduce(local.data(), global.data(), static_cast<int>(2 * count), MPI_UINT64_T, MPI_SUM,
-                                   comm),
-                     "ntree gravity tree: straddling counts");
-  runtime::check_mpi(MPI_Allreduce(smallest.data(), global_smallest.data(), static_cast<int>(count), MPI_DOUBLE,
-                                   MPI_MIN, comm),
-                     "ntree gravity tree: straddling accelerations");
+  runtime::check_mpi(
+    MPI_Allreduce(local.data(), global.data(), static_cast<int>(2 * count), MPI_UINT64_T, MPI_SUM, comm),
+    "ntree gravity tree: straddling counts");
+  runtime::check_mpi(
+    MPI_Allreduce(smallest.data(), global_smallest.data(), static_cast<int>(count), MPI_DOUBLE, MPI_MIN, comm),
+    "ntree gravity tree: straddling accelerations");
   cells_.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
     straddling_cell& cell = cells_[i];
@@ -119,8 +119,8 @@ void straddling_cells::find(const key_type* keys, const double* acceleration_old
 }
 
 std::size_t straddling_cells::index(key_type key) const {
-  const auto at = std::lower_bound(cells_.begin(), cells_.end(), key,
-                                   [](const straddling_cell& c, key_type k) { return c.key < k; });
+  const auto at =
+    std::lower_bound(cells_.begin(), cells_.end(), key, [](const straddling_cell& c, key_type k) { return c.key < k; });
   return at != cells_.end() && at->key == key ? static_cast<std::size_t>(at - cells_.begin()) : npos;
 }
 
@@ -157,8 +157,8 @@ tree_node<D> from_wire(const wire_node<D>& record, quadrupole<D>* q) {
 }
 
 template<int D>
-top_tree<D> build_top_tree(const hashed_tree<D>& local, const straddling_cells& cells, bool with_quadrupoles,
-                           int rank, MPI_Comm comm) {
+top_tree<D> build_top_tree(const hashed_tree<D>& local, const straddling_cells& cells, bool with_quadrupoles, int rank,
+                           MPI_Comm comm) {
   const auto quadrupole_of = [&](std::uint32_t i) { return with_quadrupoles ? &local.node_quadrupole(i) : nullptr; };
   // What this rank knows of the top: its children of split straddling nodes that do not
   // straddle (so are all here), and its particles of straddling leaves.
@@ -240,13 +240,15 @@ top_tree<D> build_top_tree(const hashed_tree<D>& local, const straddling_cells& 
       const key_type key = top.nodes[t].key;
       const auto first = std::lower_bound(entries.begin(), entries.end(), key,
                                           [](const entry& e, key_type k) { return (e.key >> D) < k; });
-      const auto last = std::upper_bound(first, entries.end(), key,
-                                         [](key_type k, const entry& e) { return k < (e.key >> D); });
+      const auto last =
+        std::upper_bound(first, entries.end(), key, [](key_type k, const entry& e) { return k < (e.key >> D); });
       top.nodes[t].first_child = static_cast<std::uint32_t>(top.nodes.size());
       top.nodes[t].child_count = static_cast<std::uint8_t>(last - first);
       for (auto e = first; e != last; ++e) {
-        if (e->cell != straddling_cells::npos) add_cell(e->cell);
-        else add_record(records[e->record]);
+        if (e->cell != straddling_cells::npos)
+          add_cell(e->cell);
+        else
+          add_record(records[e->record]);
       }
     } else {
       // A leaf of T: its particles gathered in global order.
@@ -268,8 +270,10 @@ top_tree<D> build_top_tree(const hashed_tree<D>& local, const straddling_cells& 
     if (top.owner[t] != -1) continue;
     tree_node<D>& node = top.nodes[t];
     quadrupole<D>* q = with_quadrupoles ? &top.quadrupoles[t] : nullptr;
-    if (node.is_leaf()) compute_leaf_moments<D>(node, top.x.data(), top.m.data(), top.h.data(), q);
-    else compute_parent_moments<D>(node, top.nodes.data(), with_quadrupoles ? top.quadrupoles.data() : nullptr, q);
+    if (node.is_leaf())
+      compute_leaf_moments<D>(node, top.x.data(), top.m.data(), top.h.data(), q);
+    else
+      compute_parent_moments<D>(node, top.nodes.data(), with_quadrupoles ? top.quadrupoles.data() : nullptr, q);
   }
   return top;
 }
@@ -279,9 +283,7 @@ std::vector<target_group<D>> essential_groups(const top_tree<D>& top, const hash
                                               const straddling_cells& cells, const double* acceleration_old,
                                               std::size_t group_size, int rank) {
   std::vector<target_group<D>> groups;
-  const auto is_group = [group_size](const tree_node<D>& node) {
-    return node.size() <= group_size || node.is_leaf();
-  };
+  const auto is_group = [group_size](const tree_node<D>& node) { return node.size() <= group_size || node.is_leaf(); };
   std::vector<std::uint32_t> stack;
   // Groups below a node of this rank's own (local = global) part of T.
   const auto walk_local = [&](std::uint32_t start) {
@@ -334,19 +336,17 @@ std::vector<target_group<D>> essential_groups(const top_tree<D>& top, const hash
   return groups;
 }
 
-#define FLECSI_LITE_GRAVITY_TOP_TREE(D)                                                                  \
-  template void straddling_cells::find<D>(const key_type*, const double*, std::size_t, std::size_t, MPI_Comm); \
-  template wire_node<D> to_wire<D>(const tree_node<D>&, const quadrupole<D>*, int);                      \
-  template tree_node<D> from_wire<D>(const wire_node<D>&, quadrupole<D>*);                               \
-  template std::vector<wire_node<D>> allgather_records(const std::vector<wire_node<D>>&, MPI_Comm,       \
-                                                       std::vector<int>*);                              \
-  template top_tree<D> build_top_tree<D>(const hashed_tree<D>&, const straddling_cells&, bool, int, MPI_Comm); \
-  template std::vector<target_group<D>> essential_groups<D>(const top_tree<D>&, const hashed_tree<D>&,   \
-                                                            const straddling_cells&, const double*,     \
-                                                            std::size_t, int);
+#define FLECSI_LITE_GRAVITY_TOP_TREE(D)                                                                                \
+  template void straddling_cells::find<D>(const key_type*, const double*, std::size_t, std::size_t, MPI_Comm);         \
+  template wire_node<D> to_wire<D>(const tree_node<D>&, const quadrupole<D>*, int);                                    \
+  template tree_node<D> from_wire<D>(const wire_node<D>&, quadrupole<D>*);                                             \
+  template std::vector<wire_node<D>> allgather_records(const std::vector<wire_node<D>>&, MPI_Comm, std::vector<int>*); \
+  template top_tree<D> build_top_tree<D>(const hashed_tree<D>&, const straddling_cells&, bool, int, MPI_Comm);         \
+  template std::vector<target_group<D>> essential_groups<D>(const top_tree<D>&, const hashed_tree<D>&,                 \
+                                                            const straddling_cells&, const double*, std::size_t, int);
 FLECSI_LITE_GRAVITY_TOP_TREE(1)
 FLECSI_LITE_GRAVITY_TOP_TREE(2)
 FLECSI_LITE_GRAVITY_TOP_TREE(3)
 #undef FLECSI_LITE_GRAVITY_TOP_TREE
 
-} // namespace flecsi_lite::topology::ntree::detail
+}  // namespace flecsi_lite::topology::ntree::detail

@@ -66,4 +66,4 @@ template class gravity_tree<1>;
 template class gravity_tree<2>;
 template class gravity_tree<3>;
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

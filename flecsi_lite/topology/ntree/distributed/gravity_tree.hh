@@ -26,13 +26,13 @@ namespace flecsi_lite::topology::ntree {
 ///   tree.evaluate(newtonian, acceleration, potential);      // local
 template<int D>
 class gravity_tree {
-public:
+ public:
   /// Collective over comm. The n owned particles of this rank, in (key, id) order, the ranks'
   /// particles concatenated in rank order being the global (key, id) order (as ntree::distribute()
   /// leaves them; keys = the ntree's `key` field, full depth). acceleration_old: |a| per particle
   /// (nullable; needed with options.relative_criterion). The arrays are copied.
-  void build(const key_type* keys, const point<D>* x, const double* m, const double* h,
-             const double* acceleration_old, std::size_t n, const gravity_options& options, MPI_Comm comm);
+  void build(const key_type* keys, const point<D>* x, const double* m, const double* h, const double* acceleration_old,
+             std::size_t n, const gravity_options& options, MPI_Comm comm);
 
   /// Accelerations and potentials (G = 1) of the n owned particles, in their order: bitwise equal
   /// for any number of ranks. Not collective (all communication happens in build).
@@ -61,7 +61,7 @@ public:
   std::size_t top_nodes() const { return top_nodes_; }
   std::size_t size() const { return owned_x_.size(); }
 
-private:
+ private:
   gravity_options options_;
   std::vector<point<D>> owned_x_;
   std::vector<double> owned_m_, owned_h_;
@@ -76,4 +76,4 @@ extern template class gravity_tree<1>;
 extern template class gravity_tree<2>;
 extern template class gravity_tree<3>;
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

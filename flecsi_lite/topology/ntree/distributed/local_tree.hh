@@ -4,13 +4,13 @@
 // take owned targets and answer in storage indices, neighbours in ascending (key, id) order.
 #pragma once
 
+#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/distributed/sorted_runs.hh"
 #include "flecsi_lite/topology/ntree/group_walk.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
-#include "flecsi_lite/topology/ntree/sfc/ordering.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/sfc/ordering.hh"
 
 #include <cstddef>
 #include <cstdint>
@@ -24,14 +24,13 @@ namespace flecsi_lite::topology::ntree {
 /// together, which is the tree's particle order.
 template<int D>
 class local_tree {
-public:
+ public:
   /// Builds the tree of `total` particles, the first `owned` of them owned, from their storage
   /// arrays, which hold runs already in (key, id) order: run j is [runs[j], runs[j + 1]) (and
   /// the last ends at `total`); the runs are merged. Ids are unique, so the sorted order (and
   /// every search result) does not depend on how the particles are spread over ranks.
-  void build(const key_type* keys, const std::uint64_t* ids, const point<D>* x, const double* m,
-             const double* h, std::size_t owned, std::size_t total, const std::vector<std::size_t>& runs,
-             const tree_options& options) {
+  void build(const key_type* keys, const std::uint64_t* ids, const point<D>* x, const double* m, const double* h,
+             std::size_t owned, std::size_t total, const std::vector<std::size_t>& runs, const tree_options& options) {
     owned_ = owned;
     merge_sorted_runs(keys, ids, total, runs, sorted_to_storage_);
     storage_to_sorted_.resize(total);
@@ -40,10 +39,13 @@ public:
     ids_.resize(total);
     apply_permutation(sorted_to_storage_, keys, keys_.data());
     apply_permutation(sorted_to_storage_, ids, ids_.data());
-    flecsi_lite::forall(total, [this](std::size_t s) {
-      storage_to_sorted_[sorted_to_storage_[s]] = s;
-      owned_mask_[s] = sorted_to_storage_[s] < owned_;
-    }, "ntree::local_tree::index");
+    flecsi_lite::forall(
+      total,
+      [this](std::size_t s) {
+        storage_to_sorted_[sorted_to_storage_[s]] = s;
+        owned_mask_[s] = sorted_to_storage_[s] < owned_;
+      },
+      "ntree::local_tree::index");
     // The lists are written in place (find_neighbours), row = storage index of the target.
     for (std::size_t a = 1; a < owned; ++a)
       if (storage_to_sorted_[a - 1] > storage_to_sorted_[a])
@@ -129,7 +131,7 @@ public:
       });
   }
 
-private:
+ private:
   void gather(const point<D>* x, const double* m, const double* h) {
     const std::size_t n = sorted_to_storage_.size();
     x_.resize(n);
@@ -139,11 +141,14 @@ private:
     const std::size_t* from = sorted_to_storage_.data();
     point<D>* sorted_x = x_.data();
     double *sorted_m = m_.data(), *sorted_h = h_.data();
-    flecsi_lite::forall(n, [=](std::size_t s) {
-      sorted_x[s] = x[from[s]];
-      sorted_m[s] = m[from[s]];
-      sorted_h[s] = h[from[s]];
-    }, "ntree::local_tree::gather");
+    flecsi_lite::forall(
+      n,
+      [=](std::size_t s) {
+        sorted_x[s] = x[from[s]];
+        sorted_m[s] = m[from[s]];
+        sorted_h[s] = h[from[s]];
+      },
+      "ntree::local_tree::gather");
   }
 
   // target_mask_ in sorted order from a mask over the first `count` storage indices.
@@ -154,8 +159,9 @@ private:
     const std::size_t* from = sorted_to_storage_.data();
     const std::uint8_t* chosen = storage_targets.data();
     std::uint8_t* mask = target_mask_.data();
-    flecsi_lite::forall(size(), [=](std::size_t s) { mask[s] = from[s] < count && chosen[from[s]] != 0; },
-                        "ntree::local_tree::mark_targets");
+    flecsi_lite::forall(
+      size(), [=](std::size_t s) { mask[s] = from[s] < count && chosen[from[s]] != 0; },
+      "ntree::local_tree::mark_targets");
   }
 
   // `walk` with `targets` (a sorted-order mask), kept with its workspaces while the options stay
@@ -200,4 +206,4 @@ private:
   group_walk<D> selected_walk_, source_walk_;
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

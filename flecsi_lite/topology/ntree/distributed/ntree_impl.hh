@@ -27,18 +27,19 @@ namespace detail {
 /// topology's ghosts travel by the executor's copies like every other field's, and stay
 /// current for the tasks that read them next.
 template<int D>
-void build_tree(typename tracked<local_tree<D>>::template accessor<wo> local, const std::vector<std::size_t>& runs, tree_options options,
-                field<key_type>::accessor<ro, ro> keys, field<std::uint64_t>::accessor<ro, ro> ids,
-                typename field<point<D>>::template accessor<ro, ro> x, field<double>::accessor<ro, ro> m,
-                field<double>::accessor<ro, ro> h) {
+void build_tree(typename tracked<local_tree<D>>::template accessor<wo> local, const std::vector<std::size_t>& runs,
+                tree_options options, field<key_type>::accessor<ro, ro> keys,
+                field<std::uint64_t>::accessor<ro, ro> ids, typename field<point<D>>::template accessor<ro, ro> x,
+                field<double>::accessor<ro, ro> m, field<double>::accessor<ro, ro> h) {
   local->build(keys.data(), ids.data(), x.data(), m.data(), h.data(), x.owned_size(), x.size(), runs, options);
 }
 
 /// The task of ntree::refresh_local_tree: reading owned and ghost values makes the executor
 /// copy stale ghosts first.
 template<int D>
-void refit(typename tracked<local_tree<D>>::template accessor<rw> local, typename field<point<D>>::template accessor<ro, ro> x,
-           field<double>::accessor<ro, ro> m, field<double>::accessor<ro, ro> h) {
+void refit(typename tracked<local_tree<D>>::template accessor<rw> local,
+           typename field<point<D>>::template accessor<ro, ro> x, field<double>::accessor<ro, ro> m,
+           field<double>::accessor<ro, ro> h) {
   local->refresh(x.data(), m.data(), h.data());
 }
 
@@ -49,7 +50,7 @@ inline double lap(double& start, const char* timer) {
   timers::add(timer, elapsed);
   return elapsed;
 }
-} // namespace detail
+}  // namespace detail
 
 template<int D>
 ntree<D>::ntree(const config& settings) : config_(settings) {
@@ -60,8 +61,7 @@ ntree<D>::ntree(const config& settings) : config_(settings) {
   space_.periodic = config_.periodic;
   space_.bounds = config_.fixed_box ? *config_.fixed_box : domain<D>::open().bounds;
   if (space_.any_periodic()) {
-    if (!config_.fixed_box)
-      throw std::invalid_argument("ntree: periodic axes need a fixed_box (the periodic box)");
+    if (!config_.fixed_box) throw std::invalid_argument("ntree: periodic axes need a fixed_box (the periodic box)");
     for (int k = 0; k < D; ++k)
       if (config_.periodic[k] && !(space_.period(k) > 0))
         throw std::invalid_argument("ntree: a periodic axis needs a box of positive side");
@@ -160,7 +160,11 @@ distribution_stats ntree<D>::distribute() {
     sort_permutation(keys, ids, n, order);
     std::vector<key_id> sorted(n);
     flecsi_lite::forall(
-      n, [&](std::size_t i) { sorted[i] = {keys[order[i]], ids[order[i]]}; }, "ntree::distribute::sorted");
+      n,
+      [&](std::size_t i) {
+        sorted[i] = {keys[order[i]], ids[order[i]]};
+      },
+      "ntree::distribute::sorted");
     std::vector<double> weights;
     if (config_.balancing == balance::work) {
       const double* w = values<double>(*config_.work_weight).view().data();
@@ -276,13 +280,11 @@ std::vector<std::vector<std::size_t>> ntree<D>::find_ghost_sends(std::size_t& br
   tree_options options;
   options.bucket_size = config_.bucket_size;
   owned_tree.build(values<key_type>(key).view().data(), values<point<D>>(position).view().data(),
-                   values<double>(mass).view().data(), values<double>(smoothing_length).view().data(), n,
-                   options);
+                   values<double>(mass).view().data(), values<double>(smoothing_length).view().data(), n, options);
   const auto mine = top_branches(owned_tree, config_.branch_count, config_.support, config_.ghost_reach_factor);
   branch_count = mine.size();
   branches_ = share_branches(mine, runtime::communicator());
-  return shared_particles(owned_tree, space_, branches_, runtime::rank(), config_.support,
-                          config_.ghost_reach_factor);
+  return shared_particles(owned_tree, space_, branches_, runtime::rank(), config_.support, config_.ghost_reach_factor);
 }
 
 template<int D>
@@ -303,4 +305,4 @@ void ntree<D>::refresh_local_tree() {
   execute<detail::refit<D>>(local_, position(*this), mass(*this), smoothing_length(*this));
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

@@ -13,7 +13,7 @@ namespace {
 
 // A datatype of `bytes` contiguous bytes, freed at scope exit.
 class particle_type {
-public:
+ public:
   explicit particle_type(std::size_t bytes) {
     runtime::check_mpi(MPI_Type_contiguous(static_cast<int>(bytes), MPI_BYTE, &type_), "MPI_Type_contiguous");
     MPI_Type_commit(&type_);
@@ -23,7 +23,7 @@ public:
   ~particle_type() { MPI_Type_free(&type_); }
   MPI_Datatype get() const { return type_; }
 
-private:
+ private:
   MPI_Datatype type_ = MPI_DATATYPE_NULL;
 };
 
@@ -33,10 +33,9 @@ int checked_int(std::size_t value, const char* what) {
   return static_cast<int>(value);
 }
 
-} // namespace
+}  // namespace
 
-std::vector<data::field_storage_base*> storages_to_move(const data::topology_base& topology,
-                                                        MPI_Comm comm) {
+std::vector<data::field_storage_base*> storages_to_move(const data::topology_base& topology, MPI_Comm comm) {
   const auto& all = topology.storages();
   long count = static_cast<long>(all.size()), longest = 0;
   MPI_Allreduce(&count, &longest, 1, MPI_LONG, MPI_MAX, comm);
@@ -58,8 +57,8 @@ std::vector<data::field_storage_base*> storages_to_move(const data::topology_bas
 }
 
 particle_shipment exchange_particles(const std::vector<data::field_storage_base*>& fields,
-                                     const std::vector<std::size_t>& order,
-                                     const std::vector<std::size_t>& bounds, MPI_Comm comm) {
+                                     const std::vector<std::size_t>& order, const std::vector<std::size_t>& bounds,
+                                     MPI_Comm comm) {
   int size = 1, rank = 0;
   MPI_Comm_size(comm, &size);
   MPI_Comm_rank(comm, &rank);
@@ -99,15 +98,15 @@ particle_shipment exchange_particles(const std::vector<data::field_storage_base*
   shipment.bytes.resize(shipment.total * per_particle);
   if (per_particle == 0) return shipment;
   const particle_type type(per_particle);
-  runtime::check_mpi(MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), type.get(),
-                                   shipment.bytes.data(), receive_counts.data(), receive_offsets.data(),
-                                   type.get(), comm),
-                     "ntree particle exchange: particles");
+  runtime::check_mpi(
+    MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), type.get(), shipment.bytes.data(),
+                  receive_counts.data(), receive_offsets.data(), type.get(), comm),
+    "ntree particle exchange: particles");
   return shipment;
 }
 
-void unpack_particles(const std::vector<data::field_storage_base*>& fields,
-                      const particle_shipment& shipment, std::size_t first) {
+void unpack_particles(const std::vector<data::field_storage_base*>& fields, const particle_shipment& shipment,
+                      std::size_t first) {
   std::size_t at = first;
   const std::byte* in = shipment.bytes.data();
   for (const std::size_t count : shipment.counts) {
@@ -119,4 +118,4 @@ void unpack_particles(const std::vector<data::field_storage_base*>& fields,
   }
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

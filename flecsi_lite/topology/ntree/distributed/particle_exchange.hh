@@ -16,8 +16,7 @@ namespace flecsi_lite::topology::ntree {
 /// The storages of `topology` that exist (by field id). Collective: throws std::logic_error on
 /// every rank unless all ranks hold storages for the same fields with the same element sizes
 /// (a field must be touched on every rank, e.g. by a task, before particles can carry it).
-std::vector<data::field_storage_base*> storages_to_move(const data::topology_base& topology,
-                                                        MPI_Comm comm);
+std::vector<data::field_storage_base*> storages_to_move(const data::topology_base& topology, MPI_Comm comm);
 
 /// Particles received by exchange_particles: `counts[r]` came from rank r, in that rank's send
 /// order, packed in `bytes` block after block.
@@ -32,12 +31,12 @@ struct particle_shipment {
 /// Collective: sends particles order[bounds[r] .. bounds[r + 1]) (owned indices) to rank r, with
 /// the values of every storage in `fields`. The storages are only read.
 particle_shipment exchange_particles(const std::vector<data::field_storage_base*>& fields,
-                                     const std::vector<std::size_t>& order,
-                                     const std::vector<std::size_t>& bounds, MPI_Comm comm);
+                                     const std::vector<std::size_t>& order, const std::vector<std::size_t>& bounds,
+                                     MPI_Comm comm);
 
 /// Writes the received particles into positions [first, first + shipment.total) of every storage
 /// (which must be large enough), source rank after source rank.
-void unpack_particles(const std::vector<data::field_storage_base*>& fields,
-                      const particle_shipment& shipment, std::size_t first = 0);
+void unpack_particles(const std::vector<data::field_storage_base*>& fields, const particle_shipment& shipment,
+                      std::size_t first = 0);
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

@@ -43,15 +43,16 @@ std::vector<splitter> choose_splitters(std::vector<sample_entry> samples, int pa
   std::size_t previous = 0;
   for (int k = 1; k < parts; ++k) {
     const double target = total * k / parts;
-    std::size_t i = static_cast<std::size_t>(std::lower_bound(before.begin(), before.end(), target) -
-                                             before.begin());
+    std::size_t i = static_cast<std::size_t>(std::lower_bound(before.begin(), before.end(), target) - before.begin());
     if (i > m) i = m;
     if (i > 0 && target - before[i - 1] < before[i] - target) --i;  // the nearer boundary
     i = std::max(i, previous);
     previous = i;
     splitter& s = result[static_cast<std::size_t>(k - 1)];
-    if (i == m) s.after_all = 1;
-    else s.first = samples[i].first;
+    if (i == m)
+      s.after_all = 1;
+    else
+      s.first = samples[i].first;
   }
   return result;
 }
@@ -61,8 +62,7 @@ std::vector<splitter> find_splitters(const key_id* sorted, const double* weights
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  const std::vector<sample_entry> mine =
-    regular_sample(sorted, weights, n, sample_bytes / sizeof(key_type));
+  const std::vector<sample_entry> mine = regular_sample(sorted, weights, n, sample_bytes / sizeof(key_type));
 
   const int my_bytes = static_cast<int>(mine.size() * sizeof(sample_entry));
   std::vector<int> bytes(rank == 0 ? size : 0), offsets(rank == 0 ? size : 0);
@@ -77,20 +77,19 @@ std::vector<splitter> find_splitters(const key_id* sorted, const double* weights
     }
     all.resize(total / sizeof(sample_entry));
   }
-  runtime::check_mpi(MPI_Gatherv(mine.data(), my_bytes, MPI_BYTE, all.data(), bytes.data(),
-                                 offsets.data(), MPI_BYTE, 0, comm),
-                     "ntree sample sort: gather samples");
+  runtime::check_mpi(
+    MPI_Gatherv(mine.data(), my_bytes, MPI_BYTE, all.data(), bytes.data(), offsets.data(), MPI_BYTE, 0, comm),
+    "ntree sample sort: gather samples");
 
   std::vector<splitter> splitters(static_cast<std::size_t>(size - 1));
   if (rank == 0) splitters = choose_splitters(std::move(all), size);
-  runtime::check_mpi(MPI_Bcast(splitters.data(), static_cast<int>(splitters.size() * sizeof(splitter)),
-                               MPI_BYTE, 0, comm),
-                     "ntree sample sort: broadcast splitters");
+  runtime::check_mpi(
+    MPI_Bcast(splitters.data(), static_cast<int>(splitters.size() * sizeof(splitter)), MPI_BYTE, 0, comm),
+    "ntree sample sort: broadcast splitters");
   return splitters;
 }
 
-std::vector<std::size_t> split_sorted(const key_id* sorted, std::size_t n,
-                                      const std::vector<splitter>& splitters) {
+std::vector<std::size_t> split_sorted(const key_id* sorted, std::size_t n, const std::vector<splitter>& splitters) {
   std::vector<std::size_t> bounds(splitters.size() + 2, 0);
   for (std::size_t r = 0; r < splitters.size(); ++r) {
     const splitter& s = splitters[r];
@@ -102,4 +101,4 @@ std::vector<std::size_t> split_sorted(const key_id* sorted, std::size_t n,
   return bounds;
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

@@ -18,9 +18,7 @@ struct key_id {
   key_type key = 0;
   std::uint64_t id = 0;
 
-  friend bool operator<(const key_id& a, const key_id& b) {
-    return a.key < b.key || (a.key == b.key && a.id < b.id);
-  }
+  friend bool operator<(const key_id& a, const key_id& b) { return a.key < b.key || (a.key == b.key && a.id < b.id); }
   friend bool operator==(const key_id& a, const key_id& b) { return a.key == b.key && a.id == b.id; }
 };
 
@@ -28,8 +26,8 @@ struct key_id {
 /// below every particle, splitter[size - 1] above). A splitter marked `after_all` is above
 /// every particle: the ranks from there on receive none.
 struct splitter {
-  key_id first;               ///< the smallest (key, id) the next rank receives
-  std::uint64_t after_all = 0; ///< 1: no particle reaches the next rank
+  key_id first;                 ///< the smallest (key, id) the next rank receives
+  std::uint64_t after_all = 0;  ///< 1: no particle reaches the next rank
 };
 
 /// One entry of a rank's sample: a particle and the weight of the run of sorted particles it
@@ -59,7 +57,6 @@ std::vector<splitter> find_splitters(const key_id* sorted, const double* weights
 
 /// Destination ranges: particles [bounds[r], bounds[r + 1]) of the sorted sequence go to rank r
 /// (size() + 1 entries, bounds[0] = 0, bounds.back() = n).
-std::vector<std::size_t> split_sorted(const key_id* sorted, std::size_t n,
-                                      const std::vector<splitter>& splitters);
+std::vector<std::size_t> split_sorted(const key_id* sorted, std::size_t n, const std::vector<splitter>& splitters);
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

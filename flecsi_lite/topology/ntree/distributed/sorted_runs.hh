@@ -40,4 +40,4 @@ inline void merge_sorted_runs(const key_type* keys, const std::uint64_t* ids, st
   }
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

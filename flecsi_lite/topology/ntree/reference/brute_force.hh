@@ -15,9 +15,8 @@ namespace flecsi_lite::topology::ntree {
 /// Neighbour lists of n particles by the pair criterion of neighbour_lists.hh, trying every
 /// allowed image shift of `space` for every pair; ascending (b, shift code) per target.
 template<int D>
-void brute_force_neighbours(const point<D>* x, const double* h, std::size_t n,
-                            const domain<D>& space, const search_options& options,
-                            neighbour_lists& out) {
+void brute_force_neighbours(const point<D>* x, const double* h, std::size_t n, const domain<D>& space,
+                            const search_options& options, neighbour_lists& out) {
   const auto shifts = space.shift_table();
   const std::uint32_t allowed = space.allowed_shifts();
   const bool periodic = space.any_periodic();
@@ -29,28 +28,32 @@ void brute_force_neighbours(const point<D>* x, const double* h, std::size_t n,
         const int code = __builtin_ctz(rest);
         point<D> image;
         for (int k = 0; k < D; ++k) image[k] = x[b][k] + shifts[code][k];
-        if (within_radius(distance_squared<D>(x[a], image), radius))
-          visit(b, static_cast<shift_code>(code));
+        if (within_radius(distance_squared<D>(x[a], image), radius)) visit(b, static_cast<shift_code>(code));
       }
     }
   };
   out.offsets.assign(n + 1, 0);
-  flecsi_lite::forall(n, [&](std::size_t a) {
-    if (options.is_target(a)) scan(a, [&](std::size_t, shift_code) { ++out.offsets[a]; });
-  }, "ntree::brute_force::count");
-  const std::size_t total =
-    flecsi_lite::exclusive_scan(out.offsets.data(), n + 1, "ntree::brute_force::offsets");
+  flecsi_lite::forall(
+    n,
+    [&](std::size_t a) {
+      if (options.is_target(a)) scan(a, [&](std::size_t, shift_code) { ++out.offsets[a]; });
+    },
+    "ntree::brute_force::count");
+  const std::size_t total = flecsi_lite::exclusive_scan(out.offsets.data(), n + 1, "ntree::brute_force::offsets");
   out.neighbours.resize(total);
   out.shifts.resize(periodic ? total : 0);
-  flecsi_lite::forall(n, [&](std::size_t a) {
-    if (!options.is_target(a)) return;
-    std::size_t at = out.offsets[a];
-    scan(a, [&](std::size_t b, shift_code code) {
-      out.neighbours[at] = static_cast<std::uint32_t>(b);
-      if (periodic) out.shifts[at] = code;
-      ++at;
-    });
-  }, "ntree::brute_force::fill");
+  flecsi_lite::forall(
+    n,
+    [&](std::size_t a) {
+      if (!options.is_target(a)) return;
+      std::size_t at = out.offsets[a];
+      scan(a, [&](std::size_t b, shift_code code) {
+        out.neighbours[at] = static_cast<std::uint32_t>(b);
+        if (periodic) out.shifts[at] = code;
+        ++at;
+      });
+    },
+    "ntree::brute_force::fill");
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

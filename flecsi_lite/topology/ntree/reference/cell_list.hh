@@ -20,7 +20,7 @@ namespace flecsi_lite::topology::ntree {
 /// cell), not in globally ascending order: enough for sums that need no canonical order.
 template<int D>
 class cell_list {
-public:
+ public:
   /// Bins the n particles at x into cells of side at least `cell_size`, which must be at least
   /// the largest interaction radius of the searches to come. The side grows if the grid would
   /// have more than 8 cells per particle.
@@ -94,7 +94,7 @@ public:
            cell_of_.size() * sizeof(std::size_t);
   }
 
-private:
+ private:
   std::array<std::size_t, D> coordinates(const point<D>& x) const {
     std::array<std::size_t, D> c;
     for (int k = 0; k < D; ++k) {
@@ -121,4 +121,4 @@ private:
   std::vector<std::uint32_t> members_;
 };
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

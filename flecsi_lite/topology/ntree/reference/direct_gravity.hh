@@ -16,26 +16,27 @@ namespace flecsi_lite::topology::ntree {
 /// in order through near(r, h_i, h_j) (itself included: its self term), in parallel over targets.
 /// acceleration[t], potential[t] belong to target which[t]. h nullptr: all zero.
 template<int D, class Near>
-void direct_gravity(const point<D>* x, const double* m, const double* h, std::size_t n,
-                    const std::size_t* which, std::size_t count, const Near& near,
-                    point<D>* acceleration, double* potential) {
-  flecsi_lite::forall(count, [&](std::size_t t) {
-    const std::size_t i = which ? which[t] : t;
-    point<D> a{};
-    double phi = 0;
-    const double hi = h ? h[i] : 0.0;
-    for (std::size_t j = 0; j < n; ++j)
-      detail::add_pair<D>(x[i], hi, x[j], m[j], h ? h[j] : 0.0, near, a, phi);
-    if (acceleration) acceleration[t] = a;
-    if (potential) potential[t] = phi;
-  }, "ntree::direct_gravity", flecsi_lite::dynamic_schedule{});
+void direct_gravity(const point<D>* x, const double* m, const double* h, std::size_t n, const std::size_t* which,
+                    std::size_t count, const Near& near, point<D>* acceleration, double* potential) {
+  flecsi_lite::forall(
+    count,
+    [&](std::size_t t) {
+      const std::size_t i = which ? which[t] : t;
+      point<D> a{};
+      double phi = 0;
+      const double hi = h ? h[i] : 0.0;
+      for (std::size_t j = 0; j < n; ++j) detail::add_pair<D>(x[i], hi, x[j], m[j], h ? h[j] : 0.0, near, a, phi);
+      if (acceleration) acceleration[t] = a;
+      if (potential) potential[t] = phi;
+    },
+    "ntree::direct_gravity", flecsi_lite::dynamic_schedule{});
 }
 
 /// The same for every particle as a target (acceleration[i], potential[i] of particle i).
 template<int D, class Near>
-void direct_gravity(const point<D>* x, const double* m, const double* h, std::size_t n,
-                    const Near& near, point<D>* acceleration, double* potential) {
+void direct_gravity(const point<D>* x, const double* m, const double* h, std::size_t n, const Near& near,
+                    point<D>* acceleration, double* potential) {
   direct_gravity<D>(x, m, h, n, nullptr, n, near, acceleration, potential);
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

@@ -2,8 +2,8 @@
 // followed by D bits per level, in Morton or Hilbert order (Warren & Salmon 1993; Warren 2013).
 #pragma once
 
-#include "flecsi_lite/topology/ntree/sfc/hilbert.hh"
 #include "flecsi_lite/execution/forall.hh"
+#include "flecsi_lite/topology/ntree/sfc/hilbert.hh"
 #include "flecsi_lite/topology/ntree/sfc/morton.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
@@ -85,12 +85,11 @@ struct cell {
 
 /// Key of the cell with integer `coordinates` (each below 2^at) at level `at`.
 template<int D>
-constexpr key_type encode(curve order, const std::array<std::uint64_t, D>& coordinates,
-                          int at = max_level<D>) {
+constexpr key_type encode(curve order, const std::array<std::uint64_t, D>& coordinates, int at = max_level<D>) {
   assert(at >= 0 && at <= max_level<D>);
   for (int k = 0; k < D; ++k) assert(coordinates[k] < (std::uint64_t{1} << at));
-  const std::uint64_t index = order == curve::hilbert ? hilbert_index<D>(coordinates, at)
-                                                      : morton_index<D>(coordinates);
+  const std::uint64_t index =
+    order == curve::hilbert ? hilbert_index<D>(coordinates, at) : morton_index<D>(coordinates);
   return key_type{1} << (D * at) | index;
 }
 
@@ -113,15 +112,18 @@ template<int D>
 inline std::array<std::uint64_t, D> deepest_cell(const box<D>& domain, const point<D>& x) {
   // 2^max_level as a double; the largest coordinate is one less.
   constexpr double cells = static_cast<double>(std::uint64_t{1} << max_level<D>);
-  constexpr std::uint64_t last = (std::uint64_t{1} << max_level<D>) - 1;
+  constexpr std::uint64_t last = (std::uint64_t{1} << max_level<D>)-1;
   std::array<std::uint64_t, D> c{};
   for (int k = 0; k < D; ++k) {
     assert(domain.hi[k] > domain.lo[k]);
     const double u = (x[k] - domain.lo[k]) / (domain.hi[k] - domain.lo[k]) * cells;
     // Comparisons written so that NaN lands in cell 0 rather than in undefined behaviour.
-    if (!(u >= 1.0)) c[k] = 0;
-    else if (u >= cells) c[k] = last;
-    else c[k] = std::min(static_cast<std::uint64_t>(u), last);
+    if (!(u >= 1.0))
+      c[k] = 0;
+    else if (u >= cells)
+      c[k] = last;
+    else
+      c[k] = std::min(static_cast<std::uint64_t>(u), last);
   }
   return c;
 }
@@ -148,9 +150,9 @@ inline box<D> cell_box(curve order, key_type key, const box<D>& domain) {
 
 /// keys[i] = key_of(order, domain, x[i]) for i < n, in parallel on the host.
 template<int D>
-void compute_keys(curve order, const box<D>& domain, const point<D>* x, std::size_t n,
-                  key_type* keys) {
-  flecsi_lite::forall(n, [=](std::size_t i) { keys[i] = key_of<D>(order, domain, x[i]); }, "ntree::compute_keys");
+void compute_keys(curve order, const box<D>& domain, const point<D>* x, std::size_t n, key_type* keys) {
+  flecsi_lite::forall(
+    n, [=](std::size_t i) { keys[i] = key_of<D>(order, domain, x[i]); }, "ntree::compute_keys");
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

@@ -83,4 +83,4 @@ constexpr std::array<std::uint64_t, D> morton_cell(std::uint64_t index) {
   }
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

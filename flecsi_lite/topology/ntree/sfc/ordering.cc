@@ -31,7 +31,7 @@ void radix_sort(std::vector<key_type>& keys, std::vector<std::size_t>& order) {
   std::vector<std::size_t> order_out(n);
   for (int pass = 0; pass < pass_count; ++pass) {
     auto& offsets = histograms[pass];
-    if (offsets[digit(keys[0], pass)] == n) continue; // every key has this digit
+    if (offsets[digit(keys[0], pass)] == n) continue;  // every key has this digit
     std::size_t running = 0;
     for (auto& offset : offsets) {
       const std::size_t count = offset;
@@ -48,7 +48,7 @@ void radix_sort(std::vector<key_type>& keys, std::vector<std::size_t>& order) {
   }
 }
 
-} // namespace
+}  // namespace
 
 void sort_permutation(const key_type* keys, const std::uint64_t* ids, std::size_t n,
                       std::vector<std::size_t>& permutation) {
@@ -56,13 +56,10 @@ void sort_permutation(const key_type* keys, const std::uint64_t* ids, std::size_
   std::iota(permutation.begin(), permutation.end(), std::size_t{0});
   if (n == 0) return;
 
-  const auto by_id = [ids](std::size_t a, std::size_t b) {
-    return ids[a] < ids[b] || (ids[a] == ids[b] && a < b);
-  };
+  const auto by_id = [ids](std::size_t a, std::size_t b) { return ids[a] < ids[b] || (ids[a] == ids[b] && a < b); };
   if (n < small_size) {
-    std::sort(permutation.begin(), permutation.end(), [&](std::size_t a, std::size_t b) {
-      return keys[a] < keys[b] || (keys[a] == keys[b] && by_id(a, b));
-    });
+    std::sort(permutation.begin(), permutation.end(),
+              [&](std::size_t a, std::size_t b) { return keys[a] < keys[b] || (keys[a] == keys[b] && by_id(a, b)); });
     return;
   }
 
@@ -77,8 +74,7 @@ void sort_permutation(const key_type* keys, const std::uint64_t* ids, std::size_
   }
 }
 
-std::vector<std::size_t> sort_permutation(const key_type* keys, const std::uint64_t* ids,
-                                          std::size_t n) {
+std::vector<std::size_t> sort_permutation(const key_type* keys, const std::uint64_t* ids, std::size_t n) {
   std::vector<std::size_t> permutation;
   sort_permutation(keys, ids, n, permutation);
   return permutation;
@@ -92,4 +88,4 @@ bool is_sorted(const key_type* keys, const std::uint64_t* ids, std::size_t n) {
   return true;
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

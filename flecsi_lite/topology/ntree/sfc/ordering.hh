@@ -19,8 +19,7 @@ void sort_permutation(const key_type* keys, const std::uint64_t* ids, std::size_
                       std::vector<std::size_t>& permutation);
 
 /// As above, returning a new vector.
-std::vector<std::size_t> sort_permutation(const key_type* keys, const std::uint64_t* ids,
-                                          std::size_t n);
+std::vector<std::size_t> sort_permutation(const key_type* keys, const std::uint64_t* ids, std::size_t n);
 
 /// True when (keys[i], ids[i]) increase strictly with i.
 bool is_sorted(const key_type* keys, const std::uint64_t* ids, std::size_t n);
@@ -30,7 +29,8 @@ bool is_sorted(const key_type* keys, const std::uint64_t* ids, std::size_t n);
 template<class T>
 void apply_permutation(const std::vector<std::size_t>& permutation, const T* in, T* out) {
   const std::size_t* source = permutation.data();
-  flecsi_lite::forall(permutation.size(), [=](std::size_t i) { out[i] = in[source[i]]; }, "ntree::apply_permutation");
+  flecsi_lite::forall(
+    permutation.size(), [=](std::size_t i) { out[i] = in[source[i]]; }, "ntree::apply_permutation");
 }
 
-} // namespace flecsi_lite::topology::ntree
+}  // namespace flecsi_lite::topology::ntree

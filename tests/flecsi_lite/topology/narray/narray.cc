@@ -49,11 +49,13 @@ void write_owned(const narray& n, field<double>::accessor<wo> r, field<std::int6
   }
 }
 bool ghosts_hold_owner_values(const narray& n, field<double>::accessor<ro, ro> r,
-                              field<std::int64_t>::accessor<ro, ro> k, field<std::array<double, 2>>::accessor<ro, ro> p) {
+                              field<std::int64_t>::accessor<ro, ro> k,
+                              field<std::array<double, 2>>::accessor<ro, ro> p) {
   bool ok = r.size() == n.total_size() && k.size() == n.total_size() && p.size() == n.total_size();
   for (std::size_t i = n.owned_size(); i < n.total_size(); ++i) {
     const std::size_t g = n.global_index(i);
-    ok &= r(i) == real_of(g) && k(i) == -static_cast<std::int64_t>(g) * 7 && p(i)[0] == double(g) && p(i)[1] == -double(g);
+    ok &=
+      r(i) == real_of(g) && k(i) == -static_cast<std::int64_t>(g) * 7 && p(i)[0] == double(g) && p(i)[1] == -double(g);
   }
   return ok;
 }
@@ -65,7 +67,7 @@ bool all_equal(field<double>::accessor<ro, ro> r, double value) {
   for (std::size_t i = 0; i < r.size(); ++i) ok &= r(i) == value;
   return ok;
 }
-} // namespace
+}  // namespace
 
 TEST_CASE("the blocks partition the index space in rank order, balanced within one entity") {
   for (std::size_t global : {std::size_t(8), std::size_t(97), std::size_t(1000)}) {
@@ -99,8 +101,7 @@ TEST_CASE("ghosts are the halo entities on each side, wrapping only when periodi
       bool placed = true;
       for (std::size_t g = 0; g < left; ++g)
         placed &= n.global_index(n.owned_size() + g) == (first + global - halo + g) % global;
-      for (std::size_t g = 0; g < right; ++g)
-        placed &= n.global_index(n.owned_size() + left + g) == (end + g) % global;
+      for (std::size_t g = 0; g < right; ++g) placed &= n.global_index(n.owned_size() + left + g) == (end + g) % global;
       CHECK(all_ranks(placed));
       // Every ghost is owned by another rank, or by this one when one rank wraps around.
       bool foreign = true;
@@ -125,8 +126,8 @@ TEST_CASE("neighbor() is modular arithmetic on global indices, npos past a wall"
           consistent &= local == narray::npos;
           continue;
         }
-        consistent &= local < n.total_size() &&
-                      wrapped_offset(n.global_index(i), n.global_index(local), global) == offset;
+        consistent &=
+          local < n.total_size() && wrapped_offset(n.global_index(i), n.global_index(local), global) == offset;
       }
     CHECK(all_ranks(consistent));
   }

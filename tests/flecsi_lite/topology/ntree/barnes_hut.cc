@@ -25,14 +25,12 @@ struct fixture {
 
   explicit fixture(std::size_t bucket) : set(plummer(2000, 41)) {
     sort_by_key(set, nt::curve::hilbert);
-    tree.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), set.size(),
-               {bucket, true});
+    tree.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), set.size(), {bucket, true});
   }
 };
 
 // Direct-sum acceleration on particle a (G = 1, no softening), in ascending source order.
-vector3 direct(const particle_set<3>& set, std::size_t a,
-               const std::vector<std::uint32_t>& sources) {
+vector3 direct(const particle_set<3>& set, std::size_t a, const std::vector<std::uint32_t>& sources) {
   vector3 acceleration = vector3::Zero();
   for (const std::uint32_t b : sources) {
     if (b == a) continue;
@@ -43,14 +41,13 @@ vector3 direct(const particle_set<3>& set, std::size_t a,
   return acceleration;
 }
 
-vector3 tree_acceleration(const fixture& f, std::size_t a, const nt::interaction_list& list,
-                          bool quadrupole) {
+vector3 tree_acceleration(const fixture& f, std::size_t a, const nt::interaction_list& list, bool quadrupole) {
   vector3 acceleration = direct(f.set, a, list.particles);
   const nt::quadrupole<3> none = nt::quadrupole<3>::Zero();
   for (const std::uint32_t i : list.nodes) {
     const auto& node = f.tree.node(i);
-    acceleration += nt::as_column_vector<3>(nt::multipole_acceleration<3>(
-      node.mass, node.center, quadrupole ? f.tree.node_quadrupole(i) : none, f.set.x[a]));
+    acceleration += nt::as_column_vector<3>(
+      nt::multipole_acceleration<3>(node.mass, node.center, quadrupole ? f.tree.node_quadrupole(i) : none, f.set.x[a]));
   }
   return acceleration;
 }
@@ -65,8 +62,7 @@ double rms_error(const fixture& f, double theta, bool quadrupole) {
   for (std::size_t a = 0; a < f.set.size(); a += 4) {
     nt::barnes_hut_walk<3>(f.tree, f.set.x[a], theta, list);
     const vector3 exact = direct(f.set, a, all);
-    const double relative = (tree_acceleration(f, a, list, quadrupole) - exact).norm() /
-                            exact.norm();
+    const double relative = (tree_acceleration(f, a, list, quadrupole) - exact).norm() / exact.norm();
     sum += relative * relative;
     ++count;
   }
@@ -83,7 +79,7 @@ void check_partition(const nt::hashed_tree<3>& tree, const nt::interaction_list&
   REQUIRE(std::is_sorted(list.particles.begin(), list.particles.end()));
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("theta = 0 opens every node: the list is all particles", "[ntree][barnes_hut]") {
   const fixture f(8);
@@ -95,12 +91,11 @@ TEST_CASE("theta = 0 opens every node: the list is all particles", "[ntree][barn
     check_partition(f.tree, list);
     std::vector<std::uint32_t> all(f.set.size());
     for (std::uint32_t b = 0; b < all.size(); ++b) all[b] = b;
-    REQUIRE(tree_acceleration(f, a, list, true) == direct(f.set, a, all)); // bitwise
+    REQUIRE(tree_acceleration(f, a, list, true) == direct(f.set, a, all));  // bitwise
   }
 }
 
-TEST_CASE("accepted nodes satisfy the criterion and partition the sources",
-          "[ntree][barnes_hut]") {
+TEST_CASE("accepted nodes satisfy the criterion and partition the sources", "[ntree][barnes_hut]") {
   const fixture f(8);
   nt::interaction_list list;
   for (const double theta : {0.3, 0.7, 1.2}) {
@@ -134,16 +129,14 @@ TEST_CASE("monopole + quadrupole force converges to the direct sum", "[ntree][ba
   const fixture f(8);
   // RMS relative errors of a quadrupole tree code scale about as theta^4 (measured here:
   // 1.3e-4, 2.1e-3, 1.6e-2 at theta 0.25, 0.5, 0.75); the bounds leave a factor ~2.
-  const std::pair<double, double> bounds[] = {{0.25, 3e-4}, {0.5, 5e-3}, {0.75, 3e-2},
-                                              {1.0, 8e-2}};
+  const std::pair<double, double> bounds[] = {{0.25, 3e-4}, {0.5, 5e-3}, {0.75, 3e-2}, {1.0, 8e-2}};
   double previous = 0;
   for (const auto& [theta, bound] : bounds) {
     const double with_quadrupole = rms_error(f, theta, true);
     const double monopole_only = rms_error(f, theta, false);
-    INFO("theta " << theta << ": quadrupole " << with_quadrupole << ", monopole "
-                  << monopole_only);
+    INFO("theta " << theta << ": quadrupole " << with_quadrupole << ", monopole " << monopole_only);
     REQUIRE(with_quadrupole < monopole_only);
-    REQUIRE(with_quadrupole > previous); // the error shrinks with theta
+    REQUIRE(with_quadrupole > previous);  // the error shrinks with theta
     REQUIRE(with_quadrupole < bound);
     previous = with_quadrupole;
   }
@@ -181,9 +174,9 @@ TEST_CASE("multipole acceleration is minus the gradient of its potential", "[ntr
   const vector3 center_of_mass = weighted / mass;
   nt::quadrupole<3> q = nt::quadrupole<3>::Zero();
   for (const auto& [m, x] : masses) nt::add_point_mass<3>(q, m, x - center_of_mass);
-  REQUIRE(q == q.transpose());                               // exactly symmetric
-  REQUIRE(std::abs(q.trace()) <= 1e-14 * q.cwiseAbs().maxCoeff()); // traceless in 3D
-  REQUIRE(q.cwiseAbs().maxCoeff() > 0.01 * mass * 0.3 * 0.3);      // and not zero
+  REQUIRE(q == q.transpose());                                      // exactly symmetric
+  REQUIRE(std::abs(q.trace()) <= 1e-14 * q.cwiseAbs().maxCoeff());  // traceless in 3D
+  REQUIRE(q.cwiseAbs().maxCoeff() > 0.01 * mass * 0.3 * 0.3);       // and not zero
 
   nt::point<3> center;
   nt::as_column_vector<3>(center) = center_of_mass;
@@ -197,12 +190,11 @@ TEST_CASE("multipole acceleration is minus the gradient of its potential", "[ntr
       nt::point<3> forward = x, backward = x;
       forward[k] += step;
       backward[k] -= step;
-      const double gradient = (nt::multipole_potential<3>(mass, center, q, forward) -
-                               nt::multipole_potential<3>(mass, center, q, backward)) /
-                              (2 * step);
+      const double gradient =
+        (nt::multipole_potential<3>(mass, center, q, forward) - nt::multipole_potential<3>(mass, center, q, backward)) /
+        (2 * step);
       // Central differences: error ~ step^2 |phi'''| plus rounding ~ 1e-16 |phi| / step.
-      REQUIRE(std::abs(acceleration[k] + gradient) <=
-              1e-8 * nt::as_column_vector<3>(acceleration).norm());
+      REQUIRE(std::abs(acceleration[k] + gradient) <= 1e-8 * nt::as_column_vector<3>(acceleration).norm());
     }
   }
 }

@@ -24,21 +24,19 @@ void check_cell_list() {
       cells.build(set.x.data(), set.h.data(), set.size(), options.support * h_max);
       for (std::size_t a = 0; a < set.size(); ++a) {
         std::vector<std::uint32_t> found;
-        cells.for_each_neighbour(a, options, [&](std::size_t, std::size_t b) {
-          found.push_back(static_cast<std::uint32_t>(b));
-        });
+        cells.for_each_neighbour(a, options,
+                                 [&](std::size_t, std::size_t b) { found.push_back(static_cast<std::uint32_t>(b)); });
         std::sort(found.begin(), found.end());
         INFO("dimension " << D << ", set " << set_number << ", target " << a);
-        const std::vector<std::uint32_t> want(
-          expected.neighbours.begin() + expected.offsets[a],
-          expected.neighbours.begin() + expected.offsets[a + 1]);
+        const std::vector<std::uint32_t> want(expected.neighbours.begin() + expected.offsets[a],
+                                              expected.neighbours.begin() + expected.offsets[a + 1]);
         REQUIRE(found == want);
       }
     }
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("cell list finds the brute-force neighbours", "[ntree][cell_list]") {
   check_cell_list<1>();

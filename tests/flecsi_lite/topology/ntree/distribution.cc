@@ -75,7 +75,10 @@ std::string distribution_problem(nt::ntree<D>& tree, const particle_set<D>& set,
   if (tree.ghost_size() != 0 && size() == 1 && !tree.space().any_periodic()) problem = "ghosts on one rank";
   for (std::size_t i = 0; i < n && problem.empty(); ++i) {
     const auto found = index.find(id(i));
-    if (found == index.end()) { problem = "unknown id"; break; }
+    if (found == index.end()) {
+      problem = "unknown id";
+      break;
+    }
     const std::size_t j = found->second;
     if (m(i) != set.m[j] || h(i) != set.h[j]) problem = "mass or h detached from its particle";
     if (key(i) != nt::key_of<D>(tree.settings().order, tree.key_box(), x(i))) problem = "stale key";
@@ -143,9 +146,13 @@ void check_distribution(const particle_set<D>& set, start how, nt::curve order) 
 
 template<int D>
 void check_all_inputs() {
-  const std::vector<particle_set<D>> inputs = {
-    ntree_test::uniform<D>(1500, 11), ntree_test::lattice<D>(D == 1 ? 1000 : D == 2 ? 32 : 11, 1.3),
-    ntree_test::gaussian_blobs<D>(1500, 3, 0.05, 12), ntree_test::coincident<D>(1200, 40, 13)};
+  const std::vector<particle_set<D>> inputs = {ntree_test::uniform<D>(1500, 11),
+                                               ntree_test::lattice<D>(D == 1   ? 1000
+                                                                      : D == 2 ? 32
+                                                                               : 11,
+                                                                      1.3),
+                                               ntree_test::gaussian_blobs<D>(1500, 3, 0.05, 12),
+                                               ntree_test::coincident<D>(1200, 40, 13)};
   for (const auto& set : inputs) {
     check_distribution<D>(set, start::rank_zero, nt::curve::hilbert);
     check_distribution<D>(set, start::random_ranks, nt::curve::morton);
@@ -153,7 +160,7 @@ void check_all_inputs() {
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("regular samples weigh their runs; splitters cut at the nearest sample boundary") {
   std::vector<nt::key_id> sorted;

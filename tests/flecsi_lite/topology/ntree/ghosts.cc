@@ -135,8 +135,8 @@ void check_ghosts(particle_set<D> set, start how, const typename nt::ntree<D>::c
   std::string problem = ghost_problem(tree, sorted, stats);
   if (problem.empty()) problem = search_problem(tree, sorted, nt::interaction::symmetric);
   if (problem.empty()) problem = search_problem(tree, sorted, nt::interaction::gather);
-  INFO("D = " << D << ", " << set.size() << " particles, periodic " << config.periodic[0] << ", start "
-              << int(how) << ": " << problem);
+  INFO("D = " << D << ", " << set.size() << " particles, periodic " << config.periodic[0] << ", start " << int(how)
+              << ": " << problem);
   CHECK(problem.empty());
 }
 
@@ -155,9 +155,13 @@ typename nt::ntree<D>::config periodic_config(bool all_axes) {
 template<int D>
 void check_all_inputs() {
   const std::size_t n = 1000;
-  const std::vector<particle_set<D>> inputs = {
-    ntree_test::uniform<D>(n, 101), ntree_test::lattice<D>(D == 1 ? 600 : D == 2 ? 30 : 9, 1.0),
-    ntree_test::gaussian_blobs<D>(n, 3, 0.06, 102), ntree_test::coincident<D>(n, 30, 103)};
+  const std::vector<particle_set<D>> inputs = {ntree_test::uniform<D>(n, 101),
+                                               ntree_test::lattice<D>(D == 1   ? 600
+                                                                      : D == 2 ? 30
+                                                                               : 9,
+                                                                      1.0),
+                                               ntree_test::gaussian_blobs<D>(n, 3, 0.06, 102),
+                                               ntree_test::coincident<D>(n, 30, 103)};
   typename nt::ntree<D>::config open;
   open.branch_count = 16;  // coarse branches: many shared particles
   for (std::size_t i = 0; i < inputs.size(); ++i) {
@@ -190,7 +194,7 @@ void drift(field<nt::point<3>>::accessor<rw> x, field<std::uint64_t>::accessor<r
 
 std::uint64_t copies() { return flecsi_lite::execution::executor::instance().ghost_copies_started(); }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("ghosts complete the neighbourhoods of owned particles: 1D") { check_all_inputs<1>(); }
 TEST_CASE("ghosts complete the neighbourhoods of owned particles: 2D") { check_all_inputs<2>(); }
@@ -216,8 +220,8 @@ TEST_CASE("ghost copies of any field deliver the owners' values, only when stale
 
   // The built-in fields were copied by distribute(): reading their ghosts copies nothing.
   auto before = copies();
-  CHECK(all_ranks(
-    flecsi_lite::execute<position_ghosts_hold>(topology::position(tree), topology::id(tree), sorted).get()));
+  CHECK(
+    all_ranks(flecsi_lite::execute<position_ghosts_hold>(topology::position(tree), topology::id(tree), sorted).get()));
   CHECK(copies() == before);
 
   // A user field: written on owned particles, its ghosts are copied on the first ghost read.

@@ -50,8 +50,7 @@ field walk(const fixture& f, const nt::gravity_options& options, const Near& nea
   out.a.resize(f.size());
   out.phi.resize(f.size());
   out.counts = nt::gravity_walk<3>(nt::gravity_sources_of(f.tree), groups ? *groups : f.groups,
-                                   {f.set.x.data(), f.set.h.data()}, options, near,
-                                   out.a.data(), out.phi.data());
+                                   {f.set.x.data(), f.set.h.data()}, options, near, out.a.data(), out.phi.data());
   return out;
 }
 
@@ -63,14 +62,12 @@ field direct(const fixture& f, const Near& near, const std::vector<std::size_t>&
   out.a.resize(count);
   out.phi.resize(count);
   nt::direct_gravity<3>(f.set.x.data(), f.set.m.data(), f.set.h.data(), f.size(),
-                        which.empty() ? nullptr : which.data(), count, near, out.a.data(),
-                        out.phi.data());
+                        which.empty() ? nullptr : which.data(), count, near, out.a.data(), out.phi.data());
   return out;
 }
 
 // |a_tree - a_direct| / |a_direct| of the targets `which` (all when empty).
-std::vector<double> relative_errors(const field& tree, const field& exact,
-                                    const std::vector<std::size_t>& which = {}) {
+std::vector<double> relative_errors(const field& tree, const field& exact, const std::vector<std::size_t>& which = {}) {
   std::vector<double> errors(exact.a.size());
   for (std::size_t t = 0; t < errors.size(); ++t) {
     const std::size_t i = which.empty() ? t : which[t];
@@ -86,7 +83,7 @@ struct reference_set {
   field exact;
   std::string name;
   explicit reference_set(const std::string& set_name)
-    : f(gravity_set(set_name, 10000, 11)), exact(direct(f, spline_pair{})), name(set_name) {}
+      : f(gravity_set(set_name, 10000, 11)), exact(direct(f, spline_pair{})), name(set_name) {}
 };
 const reference_set& reference(const std::string& name) {
   static std::vector<std::unique_ptr<reference_set>> sets;
@@ -103,14 +100,13 @@ double potential_energy(const fixture& f, const std::vector<double>& phi) {
 }
 
 // Prints and returns the error percentiles of `tree` against `exact`.
-percentiles report(const std::string& what, const fixture& f, const field& tree,
-                   const field& exact, const std::vector<std::size_t>& which = {}) {
+percentiles report(const std::string& what, const fixture& f, const field& tree, const field& exact,
+                   const std::vector<std::size_t>& which = {}) {
   const percentiles error = percentiles_of(relative_errors(tree, exact, which));
-  std::cout << "gravity " << what << " N " << f.size() << ": relative force error median "
-            << error.median << ", 99th percentile " << error.p99 << ", max " << error.max
-            << "; per particle " << double(tree.counts.node_interactions) / double(f.size())
-            << " nodes, " << double(tree.counts.particle_interactions) / double(f.size())
-            << " particles\n";
+  std::cout << "gravity " << what << " N " << f.size() << ": relative force error median " << error.median
+            << ", 99th percentile " << error.p99 << ", max " << error.max << "; per particle "
+            << double(tree.counts.node_interactions) / double(f.size()) << " nodes, "
+            << double(tree.counts.particle_interactions) / double(f.size()) << " particles\n";
   return error;
 }
 
@@ -120,7 +116,7 @@ nt::gravity_options with_theta(double theta) {
   return options;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("target groups partition the particles in node order", "[ntree][gravity]") {
   const fixture f(plummer(10000, 5));
@@ -131,8 +127,7 @@ TEST_CASE("target groups partition the particles in node order", "[ntree][gravit
     REQUIRE(!groups.empty());
     // Node order is level by level; sorted by their first target they tile [0, n).
     auto by_begin = groups;
-    std::sort(by_begin.begin(), by_begin.end(),
-              [](const auto& a, const auto& b) { return a.begin < b.begin; });
+    std::sort(by_begin.begin(), by_begin.end(), [](const auto& a, const auto& b) { return a.begin < b.begin; });
     std::uint32_t next = 0;
     for (const auto& group : by_begin) {
       REQUIRE(group.begin == next);
@@ -151,14 +146,11 @@ TEST_CASE("target groups partition the particles in node order", "[ntree][gravit
     // The groups are, in node order, the nodes that are small (or leaves) with a large parent.
     std::vector<std::size_t> expected;
     const auto& nodes = f.tree.nodes();
-    const auto small = [&](const nt::tree_node<3>& node) {
-      return node.size() <= group_size || node.is_leaf();
-    };
+    const auto small = [&](const nt::tree_node<3>& node) { return node.size() <= group_size || node.is_leaf(); };
     if (small(nodes[0])) expected.push_back(0);
     for (std::size_t parent = 0; parent < nodes.size() && !small(nodes[0]); ++parent) {
       if (small(nodes[parent])) continue;
-      for (std::uint32_t c = nodes[parent].first_child;
-           c < nodes[parent].first_child + nodes[parent].child_count; ++c)
+      for (std::uint32_t c = nodes[parent].first_child; c < nodes[parent].first_child + nodes[parent].child_count; ++c)
         if (small(nodes[c])) expected.push_back(c);
     }
     std::sort(expected.begin(), expected.end());
@@ -173,8 +165,7 @@ TEST_CASE("target groups partition the particles in node order", "[ntree][gravit
   }
 }
 
-TEST_CASE("theta = 0 is the direct sum bit for bit, and conserves momentum",
-          "[ntree][gravity]") {
+TEST_CASE("theta = 0 is the direct sum bit for bit, and conserves momentum", "[ntree][gravity]") {
   const fixture f(uniform_sphere(3000, 7));
   nt::gravity_options options;
   options.theta = 0;
@@ -197,20 +188,17 @@ TEST_CASE("theta = 0 is the direct sum bit for bit, and conserves momentum",
   REQUIRE(momentum.norm() < 1e-13 * scale);
 }
 
-
 TEST_CASE("force errors at theta 0.5 and 0.7 against direct summation", "[ntree][gravity]") {
   for (const std::string name : {"uniform", "plummer", "evrard"}) {
     const reference_set& r = reference(name);
     const double energy = potential_energy(r.f, r.exact.phi);
     for (const double theta : {0.5, 0.7}) {
       const field tree = walk(r.f, with_theta(theta), spline_pair{});
-      const percentiles error =
-        report(name + " theta " + std::to_string(theta).substr(0, 3), r.f, tree, r.exact);
+      const percentiles error = report(name + " theta " + std::to_string(theta).substr(0, 3), r.f, tree, r.exact);
       const double energy_error = std::abs(potential_energy(r.f, tree.phi) / energy - 1);
-      std::cout << "gravity " << name << " theta " << theta << ": potential energy error "
-                << energy_error << "\n";
-      INFO(name << " theta " << theta << ": median " << error.median << ", p99 " << error.p99
-                << ", energy " << energy_error);
+      std::cout << "gravity " << name << " theta " << theta << ": potential energy error " << energy_error << "\n";
+      INFO(name << " theta " << theta << ": median " << error.median << ", p99 " << error.p99 << ", energy "
+                << energy_error);
       if (theta == 0.5) {
         REQUIRE(error.median <= 6e-4);
         REQUIRE(error.p99 <= 2.5e-3);
@@ -230,8 +218,7 @@ TEST_CASE("force errors on 1e5 particles, plain Newtonian pairs", "[ntree][gravi
   for (const double theta : {0.5, 0.7}) {
     const field tree = walk(f, with_theta(theta), newtonian_pair{});
     const percentiles error =
-      report("evrard 1e5 (every 100th target) theta " + std::to_string(theta).substr(0, 3), f,
-             tree, exact, which);
+      report("evrard 1e5 (every 100th target) theta " + std::to_string(theta).substr(0, 3), f, tree, exact, which);
     if (theta == 0.5) {
       REQUIRE(error.median <= 6e-4);
       REQUIRE(error.p99 <= 2.5e-3);
@@ -244,11 +231,9 @@ TEST_CASE("force errors on 1e5 particles, plain Newtonian pairs", "[ntree][gravi
 TEST_CASE("the quadrupoles count: monopoles alone err clearly more", "[ntree][gravity]") {
   const reference_set& r = reference("evrard");
   nt::gravity_options options;
-  const percentiles with = report("evrard quadrupole theta 0.5", r.f,
-                                  walk(r.f, options, spline_pair{}), r.exact);
+  const percentiles with = report("evrard quadrupole theta 0.5", r.f, walk(r.f, options, spline_pair{}), r.exact);
   options.quadrupole = false;
-  const percentiles without = report("evrard monopole only theta 0.5", r.f,
-                                     walk(r.f, options, spline_pair{}), r.exact);
+  const percentiles without = report("evrard monopole only theta 0.5", r.f, walk(r.f, options, spline_pair{}), r.exact);
   REQUIRE(without.median > 3 * with.median);
   REQUIRE(without.p99 > 3 * with.p99);
 }
@@ -261,11 +246,9 @@ TEST_CASE("the near-field rule keeps softened pairs out of the multipoles", "[nt
   const fixture f(std::move(set));
   const field exact = direct(f, spline_pair{});
   nt::gravity_options options = with_theta(0.7);
-  const percentiles near = report("uniform h x3 theta 0.7 near_factor 2", f,
-                                  walk(f, options, spline_pair{}), exact);
+  const percentiles near = report("uniform h x3 theta 0.7 near_factor 2", f, walk(f, options, spline_pair{}), exact);
   options.near_factor = 0;
-  const percentiles none = report("uniform h x3 theta 0.7 near_factor 0", f,
-                                  walk(f, options, spline_pair{}), exact);
+  const percentiles none = report("uniform h x3 theta 0.7 near_factor 0", f, walk(f, options, spline_pair{}), exact);
   REQUIRE(near.p99 <= 1e-2);
   REQUIRE(none.p99 > 5 * near.p99);
 }
@@ -274,8 +257,7 @@ TEST_CASE("GADGET-2's relative criterion reaches comparable accuracy", "[ntree][
   for (const std::string name : {"uniform", "evrard"}) {
     const reference_set& r = reference(name);
     std::vector<double> magnitude(r.f.size());
-    for (std::size_t i = 0; i < r.f.size(); ++i)
-      magnitude[i] = nt::as_column_vector<3>(r.exact.a[i]).norm();
+    for (std::size_t i = 0; i < r.f.size(); ++i) magnitude[i] = nt::as_column_vector<3>(r.exact.a[i]).norm();
     nt::gravity_options options;
     options.relative_criterion = true;
     // Without old accelerations the groups fall back to the geometric test, bit for bit.
@@ -283,7 +265,7 @@ TEST_CASE("GADGET-2's relative criterion reaches comparable accuracy", "[ntree][
     const field fallback = walk(r.f, options, spline_pair{}, &r.f.groups);
     REQUIRE(fallback.a == geometric.a);
     const auto groups = nt::target_groups<3>(r.f.tree, 32, magnitude.data());
-    options.theta = 0; // not used where old accelerations are known
+    options.theta = 0;  // not used where old accelerations are known
     const field relative = walk(r.f, options, spline_pair{}, &groups);
     const percentiles error = report(name + " relative alpha 0.0025", r.f, relative, r.exact);
     REQUIRE(relative.counts.node_interactions > 0);
@@ -332,8 +314,7 @@ TEST_CASE("interaction lists partition the sources and satisfy the criteria", "[
 TEST_CASE("relative criterion: accepted nodes pass eq. 18 and the guard", "[ntree][gravity]") {
   const reference_set& r = reference("evrard");
   std::vector<double> magnitude(r.f.size());
-  for (std::size_t i = 0; i < r.f.size(); ++i)
-    magnitude[i] = nt::as_column_vector<3>(r.exact.a[i]).norm();
+  for (std::size_t i = 0; i < r.f.size(); ++i) magnitude[i] = nt::as_column_vector<3>(r.exact.a[i]).norm();
   const auto groups = nt::target_groups<3>(r.f.tree, 32, magnitude.data());
   const auto sources = nt::gravity_sources_of(r.f.tree);
   nt::gravity_options options;
@@ -355,7 +336,7 @@ TEST_CASE("relative criterion: accepted nodes pass eq. 18 and the guard", "[ntre
         for (std::uint32_t i = group.begin; i < group.end; ++i) {
           const double r2 = nt::distance_squared<3>(r.f.set.x[i], node.center);
           REQUIRE(node.mass * side * side <= alpha * magnitude[i] * r2 * r2);
-          bool inside = true; // GADGET-2's guard: |x - centre| < 0.6 side on every axis
+          bool inside = true;  // GADGET-2's guard: |x - centre| < 0.6 side on every axis
           for (int k = 0; k < 3; ++k) inside = inside && std::abs(r.f.set.x[i][k] - centre[k]) < 0.6 * side;
           REQUIRE_FALSE(inside);
         }
@@ -366,8 +347,7 @@ TEST_CASE("relative criterion: accepted nodes pass eq. 18 and the guard", "[ntre
   REQUIRE(accepted > 0);
 }
 
-TEST_CASE("the walk is its sequential definition, whatever the threads and group order",
-          "[ntree][gravity]") {
+TEST_CASE("the walk is its sequential definition, whatever the threads and group order", "[ntree][gravity]") {
   const reference_set& r = reference("plummer");
   const auto sources = nt::gravity_sources_of(r.f.tree);
   const nt::gravity_options options;
@@ -387,8 +367,7 @@ TEST_CASE("the walk is its sequential definition, whatever the threads and group
     for (std::uint32_t i = group.begin; i < group.end; ++i) {
       nt::point<3> a;
       double phi;
-      nt::detail::sum_gravity_list<3>(list, r.f.set.x[i], r.f.set.h[i], options.near_factor, spline_pair{}, a,
-                                      phi);
+      nt::detail::sum_gravity_list<3>(list, r.f.set.x[i], r.f.set.h[i], options.near_factor, spline_pair{}, a, phi);
       REQUIRE(a == parallel.a[i]);
       REQUIRE(phi == parallel.phi[i]);
     }
@@ -397,8 +376,7 @@ TEST_CASE("the walk is its sequential definition, whatever the threads and group
   REQUIRE(parallel.counts.particle_interactions == particles);
 }
 
-TEST_CASE("multipole_field is multipole_potential and multipole_acceleration at once",
-          "[ntree][gravity]") {
+TEST_CASE("multipole_field is multipole_potential and multipole_acceleration at once", "[ntree][gravity]") {
   const reference_set& r = reference("evrard");
   const auto& nodes = r.f.tree.nodes();
   for (std::size_t index = 0; index < nodes.size(); index += 13) {
@@ -412,8 +390,7 @@ TEST_CASE("multipole_field is multipole_potential and multipole_acceleration at 
   }
 }
 
-TEST_CASE("the walk in 2D: theta = 0 is the direct sum, theta 0.5 close to it",
-          "[ntree][gravity]") {
+TEST_CASE("the walk in 2D: theta = 0 is the direct sum, theta 0.5 close to it", "[ntree][gravity]") {
   particle_set<2> set = uniform<2>(3000, 19);
   sort_by_key(set, nt::curve::morton);
   nt::hashed_tree<2> tree;
@@ -422,24 +399,23 @@ TEST_CASE("the walk in 2D: theta = 0 is the direct sum, theta 0.5 close to it",
   const std::size_t n = set.size();
   std::vector<nt::point<2>> exact(n), a(n);
   std::vector<double> exact_phi(n), phi(n);
-  nt::direct_gravity<2>(set.x.data(), set.m.data(), set.h.data(), n, spline_pair{},
-                        exact.data(), exact_phi.data());
+  nt::direct_gravity<2>(set.x.data(), set.m.data(), set.h.data(), n, spline_pair{}, exact.data(), exact_phi.data());
   nt::gravity_options options;
   options.theta = 0;
-  nt::gravity_walk<2>(nt::gravity_sources_of(tree), groups, {set.x.data(), set.h.data()},
-                      options, spline_pair{}, a.data(), phi.data());
+  nt::gravity_walk<2>(nt::gravity_sources_of(tree), groups, {set.x.data(), set.h.data()}, options, spline_pair{},
+                      a.data(), phi.data());
   REQUIRE(a == exact);
   REQUIRE(phi == exact_phi);
   options.theta = 0.5;
-  nt::gravity_walk<2>(nt::gravity_sources_of(tree), groups, {set.x.data(), set.h.data()},
-                      options, spline_pair{}, a.data(), phi.data());
+  nt::gravity_walk<2>(nt::gravity_sources_of(tree), groups, {set.x.data(), set.h.data()}, options, spline_pair{},
+                      a.data(), phi.data());
   std::vector<double> errors(n);
   for (std::size_t i = 0; i < n; ++i)
     errors[i] = (nt::as_column_vector<2>(a[i]) - nt::as_column_vector<2>(exact[i])).norm() /
                 nt::as_column_vector<2>(exact[i]).norm();
   const percentiles error = percentiles_of(errors);
-  std::cout << "gravity 2D uniform N " << n << " theta 0.5: median " << error.median
-            << ", 99th percentile " << error.p99 << "\n";
+  std::cout << "gravity 2D uniform N " << n << " theta 0.5: median " << error.median << ", 99th percentile "
+            << error.p99 << "\n";
   REQUIRE(error.median <= 1e-3);
   REQUIRE(error.p99 <= 1e-2);
 }

@@ -19,8 +19,8 @@ namespace detail {
 // n points of a spherically symmetric distribution of unit mass and radius: radius_of(u) is
 // the radius enclosing mass fraction u, density_of(r) the number density per particle.
 template<class Radius, class Density>
-particle_set<3> sphere(std::size_t n, std::uint64_t seed, const Radius& radius_of,
-                       const Density& density_of, double neighbours) {
+particle_set<3> sphere(std::size_t n, std::uint64_t seed, const Radius& radius_of, const Density& density_of,
+                       double neighbours) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> unit(0, 1);
   particle_set<3> set;
@@ -38,20 +38,18 @@ particle_set<3> sphere(std::size_t n, std::uint64_t seed, const Radius& radius_o
   finish(set, density, neighbours, random, 0.1);
   return set;
 }
-} // namespace detail
+}  // namespace detail
 
 /// n points uniform in the unit ball.
 inline particle_set<3> uniform_sphere(std::size_t n, std::uint64_t seed, double neighbours = 40) {
   return detail::sphere(
-    n, seed, [](double u) { return std::cbrt(u); }, [](double) { return 3 / (4 * M_PI); },
-    neighbours);
+    n, seed, [](double u) { return std::cbrt(u); }, [](double) { return 3 / (4 * M_PI); }, neighbours);
 }
 
 /// Evrard's sphere: density 1 / (2 pi r) inside r < 1 (mass r^2 within r).
 inline particle_set<3> evrard_sphere(std::size_t n, std::uint64_t seed, double neighbours = 40) {
   return detail::sphere(
-    n, seed, [](double u) { return std::sqrt(u); }, [](double r) { return 1 / (2 * M_PI * r); },
-    neighbours);
+    n, seed, [](double u) { return std::sqrt(u); }, [](double r) { return 1 / (2 * M_PI * r); }, neighbours);
 }
 
 /// The sets by name: "uniform", "plummer", "evrard".
@@ -81,8 +79,7 @@ struct spline_pair {
       const double potential = (2.0 / 3 * q2 - 0.3 * q2 * q2 + 0.1 * q2 * q3 - 1.4) / h;
       return {potential, r == 0 ? 0.0 : (4.0 / 3 - 1.2 * q2 + 0.5 * q3) / h3};
     }
-    const double potential =
-      (4.0 / 3 * q2 - q3 + 0.3 * q2 * q2 - q2 * q3 / 30 - 1.6 + 1 / (15 * q)) / h;
+    const double potential = (4.0 / 3 * q2 - q3 + 0.3 * q2 * q2 - q2 * q3 / 30 - 1.6 + 1 / (15 * q)) / h;
     return {potential, (8.0 / 3 - 3 * q + 1.2 * q2 - q3 / 6 - 1 / (15 * q3)) / h3};
   }
 };
@@ -105,4 +102,4 @@ inline percentiles percentiles_of(std::vector<double> values) {
   return result;
 }
 
-} // namespace ntree_test
+}  // namespace ntree_test

@@ -164,7 +164,7 @@ field_result<D> check_rank_invariance(const particle_set<D>& set, const std::vec
   return one;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("distributed gravity: Evrard sphere with a coincident stack, bitwise equal on any rank count") {
   const auto set = with_stack<3>(ntree_test::evrard_sphere(20000, 7), 60);
@@ -258,8 +258,7 @@ TEST_CASE("distributed gravity: theta = 0 is direct summation on any rank count"
   const ntree_test::spline_pair near;
   std::vector<nt::point<3>> a_direct(set.size());
   std::vector<double> phi_direct(set.size());
-  nt::direct_gravity<3>(set.x.data(), set.m.data(), set.h.data(), set.size(), near, a_direct.data(),
-                        phi_direct.data());
+  nt::direct_gravity<3>(set.x.data(), set.m.data(), set.h.data(), set.size(), near, a_direct.data(), phi_direct.data());
   nt::gravity_options every_node;
   every_node.theta = 0;
   // The relative criterion with alpha = 0 accepts no node either.
@@ -268,8 +267,9 @@ TEST_CASE("distributed gravity: theta = 0 is direct summation on any rank count"
   relative_zero.relative_tolerance = 0;
   std::vector<double> acceleration_old(set.size(), 1.0);
   for (const auto* options : {&every_node, &relative_zero}) {
-    const auto one = check_rank_invariance<3>(set, bounds, options == &relative_zero ? acceleration_old.data() : nullptr,
-                                              *options, near, options == &every_node ? "theta 0" : "alpha 0");
+    const auto one =
+      check_rank_invariance<3>(set, bounds, options == &relative_zero ? acceleration_old.data() : nullptr, *options,
+                               near, options == &every_node ? "theta 0" : "alpha 0");
     double worst_a = 0, worst_phi = 0;
     for (std::size_t i = 0; i < set.size(); ++i) {
       nt::point<3> d;
@@ -277,8 +277,7 @@ TEST_CASE("distributed gravity: theta = 0 is direct summation on any rank count"
       worst_a = std::max(worst_a, norm<3>(d) / norm<3>(a_direct[i]));
       worst_phi = std::max(worst_phi, std::abs(one.phi[i] - phi_direct[i]) / std::abs(phi_direct[i]));
     }
-    INFO("largest relative differences from direct summation: acceleration " << worst_a << ", potential "
-                                                                              << worst_phi);
+    INFO("largest relative differences from direct summation: acceleration " << worst_a << ", potential " << worst_phi);
     CHECK(worst_a < 1e-10);
     CHECK(worst_phi < 1e-12);
   }

@@ -20,10 +20,10 @@ void check_groups_partition(const nt::group_walk<D>& walk, const nt::hashed_tree
     const auto& node = tree.node(g);
     REQUIRE(node.begin == at);
     at = node.end;
-    const bool small = node.size() <= grouping.max_group_size ||
-                       (grouping.max_group_mass > 0 && node.mass <= grouping.max_group_mass);
-    const bool compact = grouping.max_group_extent <= 0 ||
-                         node.bounds.max_extent() <= grouping.max_group_extent * 2.0 * node.h_max;
+    const bool small =
+      node.size() <= grouping.max_group_size || (grouping.max_group_mass > 0 && node.mass <= grouping.max_group_mass);
+    const bool compact =
+      grouping.max_group_extent <= 0 || node.bounds.max_extent() <= grouping.max_group_extent * 2.0 * node.h_max;
     REQUIRE((node.is_leaf() || (small && compact)));
   }
   REQUIRE(at == tree.size());
@@ -37,8 +37,8 @@ void check_group_walk(nt::curve order) {
     const auto mask = random_targets(set.size(), 23);
     const double total_mass = tree.root().mass;
     const nt::group_options groupings[] = {
-      {1, 0, 0}, {8, 0, 0}, {64, 0, 0}, {64, 0, 0.5}, {100000, 0.02 * total_mass, 0},
-      {32, 0, 0, 40}}; // the last: most groups fall back to per-target walks
+      {1, 0, 0},     {8, 0, 0}, {64, 0, 0}, {64, 0, 0.5}, {100000, 0.02 * total_mass, 0},
+      {32, 0, 0, 40}};  // the last: most groups fall back to per-target walks
     for (const nt::interaction kind : {nt::interaction::gather, nt::interaction::symmetric}) {
       for (const std::uint8_t* targets : {static_cast<const std::uint8_t*>(nullptr), mask.data()}) {
         const nt::search_options options{kind, 2.0, targets};
@@ -59,20 +59,16 @@ void check_group_walk(nt::curve order) {
   }
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("group walk equals brute force in 1D", "[ntree][group_walk]") {
-  check_group_walk<1>(nt::curve::hilbert);
-}
+TEST_CASE("group walk equals brute force in 1D", "[ntree][group_walk]") { check_group_walk<1>(nt::curve::hilbert); }
 
 TEST_CASE("group walk equals brute force in 2D", "[ntree][group_walk]") {
   check_group_walk<2>(nt::curve::hilbert);
   check_group_walk<2>(nt::curve::morton);
 }
 
-TEST_CASE("group walk equals brute force in 3D", "[ntree][group_walk]") {
-  check_group_walk<3>(nt::curve::hilbert);
-}
+TEST_CASE("group walk equals brute force in 3D", "[ntree][group_walk]") { check_group_walk<3>(nt::curve::hilbert); }
 
 TEST_CASE("group walk on a Plummer sphere with adaptive h", "[ntree][group_walk]") {
   auto set = plummer(3000, 31, 60);
@@ -92,8 +88,7 @@ TEST_CASE("group walk on a Plummer sphere with adaptive h", "[ntree][group_walk]
   }
 }
 
-TEST_CASE("sums in canonical order are reproducible across thread schedules",
-          "[ntree][group_walk]") {
+TEST_CASE("sums in canonical order are reproducible across thread schedules", "[ntree][group_walk]") {
   auto set = uniform<3>(3000, 77, 60);
   sort_by_key(set, nt::curve::hilbert);
   const auto tree = build_tree(set, 16);
@@ -109,5 +104,5 @@ TEST_CASE("sums in canonical order are reproducible across thread schedules",
   nt::group_walk<3> large({}, {128, 0});
   const auto first = density(small);
   const auto second = density(large);
-  for (std::size_t a = 0; a < set.size(); ++a) REQUIRE(first[a] == second[a]); // bitwise
+  for (std::size_t a = 0; a < set.size(); ++a) REQUIRE(first[a] == second[a]);  // bitwise
 }

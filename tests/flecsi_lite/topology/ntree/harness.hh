@@ -42,8 +42,10 @@ std::vector<std::size_t> starting_here(const particle_set<D>& set, start how) {
   const std::size_t n = set.size(), p = static_cast<std::size_t>(size()), r = static_cast<std::size_t>(rank());
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t owner = 0;
-    if (how == start::random_ranks) owner = (set.id[i] * 0xbf58476d1ce4e5b9ull >> 29) % p;
-    else if (how == start::reversed_blocks) owner = p - 1 - i * p / n;
+    if (how == start::random_ranks)
+      owner = (set.id[i] * 0xbf58476d1ce4e5b9ull >> 29) % p;
+    else if (how == start::reversed_blocks)
+      owner = p - 1 - i * p / n;
     if (owner == r) mine.push_back(i);
   }
   return mine;
@@ -103,4 +105,4 @@ std::unordered_map<std::uint64_t, std::size_t> index_by_id(const particle_set<D>
   return index;
 }
 
-} // namespace ntree_mpi_test
+}  // namespace ntree_mpi_test

@@ -17,8 +17,7 @@ namespace nt = flecsi_lite::topology::ntree;
 namespace {
 
 template<int D>
-void check_structure(const nt::hashed_tree<D>& tree, const ntree_test::particle_set<D>& set,
-                     std::size_t bucket) {
+void check_structure(const nt::hashed_tree<D>& tree, const ntree_test::particle_set<D>& set, std::size_t bucket) {
   const auto& nodes = tree.nodes();
   REQUIRE(tree.size() == set.size());
   REQUIRE(tree.root().key == nt::root_key);
@@ -31,8 +30,7 @@ void check_structure(const nt::hashed_tree<D>& tree, const ntree_test::particle_
     REQUIRE(nt::level<D>(node.key) == node.level);
     REQUIRE(node.size() > 0);
     // Every particle of the node has the node's key as prefix, and no other particle does.
-    for (std::uint32_t b = node.begin; b < node.end; ++b)
-      REQUIRE(nt::ancestor<D>(set.keys[b], node.level) == node.key);
+    for (std::uint32_t b = node.begin; b < node.end; ++b) REQUIRE(nt::ancestor<D>(set.keys[b], node.level) == node.key);
     if (node.begin > 0) REQUIRE(nt::ancestor<D>(set.keys[node.begin - 1], node.level) != node.key);
     if (node.end < set.size()) REQUIRE(nt::ancestor<D>(set.keys[node.end], node.level) != node.key);
     // The nodes of a level come in key order.
@@ -73,7 +71,7 @@ void check_moments(const nt::hashed_tree<D>& tree, const ntree_test::particle_se
       h_max = std::max(h_max, set.h[b]);
       for (int k = 0; k < D; ++k) weighted[k] += set.m[b] * set.x[b][k];
     }
-    REQUIRE(node.bounds == bounds); // exact: min and max do not round
+    REQUIRE(node.bounds == bounds);  // exact: min and max do not round
     REQUIRE(node.h_max == h_max);
     // The compact copy used by the searches is conservative: a wider box, a larger h.
     const auto& compact = tree.search_nodes()[i];
@@ -97,8 +95,7 @@ void check_moments(const nt::hashed_tree<D>& tree, const ntree_test::particle_se
     nt::quadrupole<D> q = nt::quadrupole<D>::Zero();
     double inertia = 0;
     for (std::uint32_t b = node.begin; b < node.end; ++b) {
-      const nt::column_vector<D> d =
-        nt::as_column_vector<D>(set.x[b]) - nt::as_column_vector<D>(center);
+      const nt::column_vector<D> d = nt::as_column_vector<D>(set.x[b]) - nt::as_column_vector<D>(center);
       nt::add_point_mass<D>(q, set.m[b], d);
       inertia += set.m[b] * d.squaredNorm();
     }
@@ -119,14 +116,13 @@ void check_set(ntree_test::particle_set<D> set, std::size_t bucket) {
   for (const nt::curve order : {nt::curve::morton, nt::curve::hilbert}) {
     ntree_test::sort_by_key(set, order);
     nt::hashed_tree<D> tree;
-    tree.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), set.size(),
-               {bucket, true});
+    tree.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), set.size(), {bucket, true});
     check_structure(tree, set, bucket);
     check_moments(tree, set);
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("hashed tree of uniform, lattice and clustered particles", "[ntree][tree]") {
   check_set(ntree_test::uniform<1>(2000, 1), 8);
@@ -209,6 +205,6 @@ TEST_CASE("outward rounding to float never moves a bound inward", "[ntree][tree]
     REQUIRE(std::nextafter(below, 1e30f) >= value);
     REQUIRE(std::nextafter(above, -1e30f) <= value);
   }
-  REQUIRE(nt::float_below(0.1) < 0.1f); // the nearest float, 0.1f, lies above 0.1
+  REQUIRE(nt::float_below(0.1) < 0.1f);  // the nearest float, 0.1f, lies above 0.1
   REQUIRE(nt::float_above(1e300) == std::numeric_limits<float>::infinity());
 }

@@ -29,8 +29,7 @@ std::uint64_t reference_morton(const cell_coordinates<D>& c, int bits) {
 template<int D>
 cell_coordinates<D> random_cell(std::mt19937_64& random, int bits) {
   cell_coordinates<D> c;
-  for (int k = 0; k < D; ++k)
-    c[k] = bits == 64 ? random() : random() & ((std::uint64_t{1} << bits) - 1);
+  for (int k = 0; k < D; ++k) c[k] = bits == 64 ? random() : random() & ((std::uint64_t{1} << bits) - 1);
   return c;
 }
 
@@ -151,7 +150,7 @@ void check_children_tile_parent(nt::curve order) {
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("depth limits and the root key", "[ntree][keys]") {
   STATIC_REQUIRE(nt::max_level<1> == 63);
@@ -206,7 +205,7 @@ TEST_CASE("keys: encode/decode, parent/child and cell geometry", "[ntree][keys]"
 
 TEST_CASE("keys of positions outside the box are clamped to boundary cells", "[ntree][keys]") {
   nt::box<2> domain{{0, 0}, {1, 1}};
-  const auto last = (std::uint64_t{1} << nt::max_level<2>) - 1;
+  const auto last = (std::uint64_t{1} << nt::max_level<2>)-1;
   const auto c = nt::deepest_cell<2>(domain, {-0.5, 1.5});
   REQUIRE(c[0] == 0);
   REQUIRE(c[1] == last);
@@ -221,6 +220,5 @@ TEST_CASE("keys computed in parallel equal the scalar function", "[ntree][keys]"
   const nt::box<3> domain{{0, 0, 0}, {1, 1, 1}};
   std::vector<nt::key_type> keys(x.size());
   nt::compute_keys<3>(nt::curve::hilbert, domain, x.data(), x.size(), keys.data());
-  for (std::size_t i = 0; i < x.size(); ++i)
-    REQUIRE(keys[i] == nt::key_of<3>(nt::curve::hilbert, domain, x[i]));
+  for (std::size_t i = 0; i < x.size(); ++i) REQUIRE(keys[i] == nt::key_of<3>(nt::curve::hilbert, domain, x[i]));
 }

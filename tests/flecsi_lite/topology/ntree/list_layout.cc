@@ -8,7 +8,6 @@
 
 #include <catch2/catch.hpp>
 
-
 namespace nt = flecsi_lite::topology::ntree;
 using namespace ntree_test;
 
@@ -31,7 +30,7 @@ nt::domain<3> unit_box(bool periodic) {
   return space;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("packed shift codes equal separate ones", "[ntree][list_layout]") {
   auto set = uniform<3>(2000, 91, 60);

@@ -18,23 +18,21 @@ std::vector<std::size_t> reference_permutation(const std::vector<nt::key_type>& 
                                                const std::vector<std::uint64_t>& ids) {
   std::vector<std::size_t> order(keys.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return keys[a] < keys[b] || (keys[a] == keys[b] && ids[a] < ids[b]);
-  });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return keys[a] < keys[b] || (keys[a] == keys[b] && ids[a] < ids[b]); });
   return order;
 }
 
 // Sorted (key, id) pairs obtained through the permutation of the library.
-std::vector<std::pair<nt::key_type, std::uint64_t>> sorted_pairs(
-  const std::vector<nt::key_type>& keys, const std::vector<std::uint64_t>& ids) {
+std::vector<std::pair<nt::key_type, std::uint64_t>> sorted_pairs(const std::vector<nt::key_type>& keys,
+                                                                 const std::vector<std::uint64_t>& ids) {
   const auto permutation = nt::sort_permutation(keys.data(), ids.data(), keys.size());
   std::vector<std::pair<nt::key_type, std::uint64_t>> pairs;
   for (const std::size_t i : permutation) pairs.emplace_back(keys[i], ids[i]);
   return pairs;
 }
 
-void check_against_reference(const std::vector<nt::key_type>& keys,
-                             const std::vector<std::uint64_t>& ids) {
+void check_against_reference(const std::vector<nt::key_type>& keys, const std::vector<std::uint64_t>& ids) {
   const auto permutation = nt::sort_permutation(keys.data(), ids.data(), keys.size());
   REQUIRE(permutation == reference_permutation(keys, ids));
   std::vector<nt::key_type> sorted_keys(keys.size());
@@ -44,7 +42,7 @@ void check_against_reference(const std::vector<nt::key_type>& keys,
   REQUIRE(nt::is_sorted(sorted_keys.data(), sorted_ids.data(), keys.size()));
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("sort permutation equals a comparison sort on (key, id)", "[ntree][ordering]") {
   std::mt19937_64 random(21);

@@ -23,15 +23,17 @@ struct particle_set {
   std::vector<double> m;
   std::vector<double> h;
   std::vector<std::uint64_t> id;
-  std::vector<nt::key_type> keys; // filled by sort_by_key
-  nt::box<D> domain;              // the box keys are computed in
+  std::vector<nt::key_type> keys;  // filled by sort_by_key
+  nt::box<D> domain;               // the box keys are computed in
 
   std::size_t size() const { return x.size(); }
 };
 
 /// Volume of the unit ball in D dimensions.
 template<int D>
-constexpr double unit_ball_volume = D == 1 ? 2.0 : D == 2 ? M_PI : 4.0 * M_PI / 3.0;
+constexpr double unit_ball_volume = D == 1   ? 2.0
+                                    : D == 2 ? M_PI
+                                             : 4.0 * M_PI / 3.0;
 
 /// Smoothing length giving about `neighbours` particles within 2h at number density `density`.
 template<int D>
@@ -41,8 +43,8 @@ double smoothing_length(double density, double neighbours) {
 
 namespace detail {
 template<int D>
-void finish(particle_set<D>& set, const std::vector<double>& density, double neighbours,
-            std::mt19937_64& random, double h_spread) {
+void finish(particle_set<D>& set, const std::vector<double>& density, double neighbours, std::mt19937_64& random,
+            double h_spread) {
   const std::size_t n = set.x.size();
   std::uniform_real_distribution<double> spread(1 - h_spread, 1 + h_spread);
   set.m.assign(n, 1.0 / static_cast<double>(n));
@@ -63,13 +65,12 @@ void finish(particle_set<D>& set, const std::vector<double>& density, double nei
     }
   }
 }
-} // namespace detail
+}  // namespace detail
 
 /// n points uniform in the unit box; h for about `neighbours` neighbours, times a random factor
 /// in [1 - h_spread, 1 + h_spread].
 template<int D>
-particle_set<D> uniform(std::size_t n, std::uint64_t seed, double neighbours = 40,
-                        double h_spread = 0.3) {
+particle_set<D> uniform(std::size_t n, std::uint64_t seed, double neighbours = 40, double h_spread = 0.3) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> unit(0, 1);
   particle_set<D> set;
@@ -79,8 +80,7 @@ particle_set<D> uniform(std::size_t n, std::uint64_t seed, double neighbours = 4
   set.domain = nt::box<D>{};
   set.domain.lo.fill(0);
   set.domain.hi.fill(1);
-  detail::finish(set, std::vector<double>(n, static_cast<double>(n)), neighbours, random,
-                 h_spread);
+  detail::finish(set, std::vector<double>(n, static_cast<double>(n)), neighbours, random, h_spread);
   return set;
 }
 
@@ -95,8 +95,7 @@ particle_set<D> lattice(std::size_t per_axis, double h_over_spacing) {
   set.x.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t rest = i;
-    for (int k = 0; k < D; ++k, rest /= per_axis)
-      set.x[i][k] = (static_cast<double>(rest % per_axis) + 0.5) * spacing;
+    for (int k = 0; k < D; ++k, rest /= per_axis) set.x[i][k] = (static_cast<double>(rest % per_axis) + 0.5) * spacing;
   }
   set.domain.lo.fill(0);
   set.domain.hi.fill(1);
@@ -122,8 +121,7 @@ particle_set<D> gaussian_blobs(std::size_t n, std::size_t blobs, double sigma, s
     for (int k = 0; k < D; ++k) set.x[i][k] = centres[i % blobs][k] + normal(random);
   // Number density: the sum of the blobs' Gaussians.
   std::vector<double> density(n, 0);
-  const double norm = static_cast<double>(n) / static_cast<double>(blobs) /
-                      std::pow(2 * M_PI * sigma * sigma, 0.5 * D);
+  const double norm = static_cast<double>(n) / static_cast<double>(blobs) / std::pow(2 * M_PI * sigma * sigma, 0.5 * D);
   for (std::size_t i = 0; i < n; ++i)
     for (const auto& c : centres)
       density[i] += norm * std::exp(-nt::distance_squared<D>(set.x[i], c) / (2 * sigma * sigma));
@@ -158,8 +156,7 @@ inline particle_set<3> plummer(std::size_t n, std::uint64_t seed, double neighbo
 /// n uniform points of which most share positions: a quarter are distinct, the others copy one
 /// of them, and the last `stack` all sit at one point (more than a bucket at the deepest level).
 template<int D>
-particle_set<D> coincident(std::size_t n, std::size_t stack, std::uint64_t seed,
-                           double neighbours = 40) {
+particle_set<D> coincident(std::size_t n, std::size_t stack, std::uint64_t seed, double neighbours = 40) {
   particle_set<D> set = uniform<D>(n, seed, neighbours, 0.3);
   std::mt19937_64 random(seed + 1);
   const std::size_t distinct = std::max<std::size_t>(1, n / 4);
@@ -189,4 +186,4 @@ void sort_by_key(particle_set<D>& set, nt::curve order) {
   nt::apply_permutation(permutation, keys.data(), set.keys.data());
 }
 
-} // namespace ntree_test
+}  // namespace ntree_test

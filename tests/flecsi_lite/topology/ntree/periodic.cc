@@ -29,8 +29,8 @@ particle_set<D> stretched(particle_set<D> set, const nt::box<D>& bounds) {
 
 // Independent reference: minimum image of each separation, and the shift it implies.
 template<int D>
-void check_minimum_image(const particle_set<D>& set, const nt::domain<D>& space,
-                         const nt::neighbour_lists& lists, double support) {
+void check_minimum_image(const particle_set<D>& set, const nt::domain<D>& space, const nt::neighbour_lists& lists,
+                         double support) {
   const auto shifts = space.shift_table();
   std::size_t pairs = 0;
   for (std::size_t a = 0; a < set.size(); ++a) {
@@ -64,7 +64,7 @@ template<int D>
 void check_periodic(const nt::box<D>& bounds, const std::array<bool, D>& periodic) {
   nt::domain<D> space{bounds, periodic};
   const std::size_t per_axis = D == 1 ? 800 : D == 2 ? 30 : 9;
-  const std::size_t n = D == 3 ? 800 : 1200; // brute force tries 27 images per pair in 3D
+  const std::size_t n = D == 3 ? 800 : 1200;  // brute force tries 27 images per pair in 3D
   std::vector<particle_set<D>> sets;
   sets.push_back(stretched(uniform<D>(n, 500 + D, 30), bounds));
   sets.push_back(stretched(lattice<D>(per_axis, 1.0), bounds));
@@ -99,11 +99,9 @@ void check_periodic(const nt::box<D>& bounds, const std::array<bool, D>& periodi
   }
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("periodic searches in 1D", "[ntree][periodic]") {
-  check_periodic<1>({{-1.0}, {2.0}}, {true});
-}
+TEST_CASE("periodic searches in 1D", "[ntree][periodic]") { check_periodic<1>({{-1.0}, {2.0}}, {true}); }
 
 TEST_CASE("periodic searches in 2D along one or both axes", "[ntree][periodic]") {
   const nt::box<2> bounds{{0.0, -0.25}, {2.0, 0.75}};
@@ -139,7 +137,7 @@ TEST_CASE("corner particles see diagonal images", "[ntree][periodic]") {
     for (std::size_t j = found.offsets[a]; j < found.offsets[a + 1]; ++j) {
       const auto shift = space.shift(found.shifts[j]);
       const double sign = found.neighbours[j] == a ? 0.0 : set.x[a][0] < 0.5 ? -1.0 : 1.0;
-      for (int k = 0; k < 3; ++k) REQUIRE(shift[k] == sign); // x_b + shift is next to x_a
+      for (int k = 0; k < 3; ++k) REQUIRE(shift[k] == sign);  // x_b + shift is next to x_a
     }
   }
 }
@@ -151,8 +149,7 @@ TEST_CASE("periodic searches refuse what they cannot do exactly", "[ntree][perio
   const nt::domain<2> space{set.domain, {true, false}};
   nt::group_walk<2> walk;
   // A functor without the shift could not place the images.
-  REQUIRE_THROWS_AS(walk.for_each_neighbour(tree, space, [](std::size_t, std::size_t) {}),
-                    std::invalid_argument);
+  REQUIRE_THROWS_AS(walk.for_each_neighbour(tree, space, [](std::size_t, std::size_t) {}), std::invalid_argument);
   // A radius beyond half a period would see one source under two shifts.
   nt::group_walk<2> wide({nt::interaction::gather, 1e3, nullptr});
   nt::neighbour_lists lists;

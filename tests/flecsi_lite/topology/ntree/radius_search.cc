@@ -20,7 +20,7 @@ void check_radius_search(nt::curve order) {
       for (const std::uint8_t* targets : {static_cast<const std::uint8_t*>(nullptr), mask.data()}) {
         const nt::search_options options{kind, 2.0, targets};
         const auto expected = brute_force(set, space, options);
-        REQUIRE(expected.total() > set.size()); // the sets do have neighbours
+        REQUIRE(expected.total() > set.size());  // the sets do have neighbours
         nt::radius_search<D> search(options);
         nt::neighbour_lists found;
         search.find_neighbours(tree, space, found);
@@ -28,28 +28,23 @@ void check_radius_search(nt::curve order) {
         require_equal(lists_from_callback(search, tree, space), expected);
         // The two-argument functor gets the same pairs.
         std::vector<std::size_t> counts(set.size(), 0);
-        search.for_each_neighbour(tree, space,
-                                  [&](std::size_t a, std::size_t) { ++counts[a]; });
+        search.for_each_neighbour(tree, space, [&](std::size_t a, std::size_t) { ++counts[a]; });
         for (std::size_t a = 0; a < set.size(); ++a) REQUIRE(counts[a] == expected.count(a));
       }
     }
   }
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("radius search equals brute force in 1D", "[ntree][search]") {
-  check_radius_search<1>(nt::curve::hilbert);
-}
+TEST_CASE("radius search equals brute force in 1D", "[ntree][search]") { check_radius_search<1>(nt::curve::hilbert); }
 
 TEST_CASE("radius search equals brute force in 2D", "[ntree][search]") {
   check_radius_search<2>(nt::curve::hilbert);
   check_radius_search<2>(nt::curve::morton);
 }
 
-TEST_CASE("radius search equals brute force in 3D", "[ntree][search]") {
-  check_radius_search<3>(nt::curve::hilbert);
-}
+TEST_CASE("radius search equals brute force in 3D", "[ntree][search]") { check_radius_search<3>(nt::curve::hilbert); }
 
 TEST_CASE("ball query around arbitrary points", "[ntree][search]") {
   auto set = uniform<3>(2000, 44);

@@ -2,9 +2,9 @@
 // comparison of neighbour lists with the brute-force reference, and callback results as lists.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/reference/brute_force.hh"
 #include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/reference/brute_force.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"
 
 #include <catch2/catch.hpp>
@@ -17,8 +17,7 @@ namespace ntree_test {
 template<int D>
 nt::hashed_tree<D> build_tree(const particle_set<D>& set, std::size_t bucket = 16) {
   nt::hashed_tree<D> tree;
-  tree.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), set.size(),
-             {bucket, false});
+  tree.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), set.size(), {bucket, false});
   return tree;
 }
 
@@ -56,15 +55,12 @@ nt::shift_code code_of(const nt::point<D>& shift) {
 /// Runs search.for_each_neighbour with a functor taking the shift and turns the calls into
 /// lists; also checks that the calls for each target come in ascending order.
 template<int D, class Search>
-nt::neighbour_lists lists_from_callback(Search& search, const nt::hashed_tree<D>& tree,
-                                        const nt::domain<D>& space) {
+nt::neighbour_lists lists_from_callback(Search& search, const nt::hashed_tree<D>& tree, const nt::domain<D>& space) {
   const std::size_t n = tree.size();
   std::vector<std::vector<std::pair<std::uint32_t, nt::shift_code>>> calls(n);
-  search.for_each_neighbour(tree, space,
-                            [&](std::size_t a, std::size_t b, const nt::point<D>& shift) {
-                              calls[a].emplace_back(static_cast<std::uint32_t>(b),
-                                                    code_of<D>(shift));
-                            });
+  search.for_each_neighbour(tree, space, [&](std::size_t a, std::size_t b, const nt::point<D>& shift) {
+    calls[a].emplace_back(static_cast<std::uint32_t>(b), code_of<D>(shift));
+  });
   nt::neighbour_lists lists;
   lists.offsets.assign(n + 1, 0);
   for (std::size_t a = 0; a < n; ++a) {
@@ -91,11 +87,11 @@ std::vector<particle_set<D>> search_sets(nt::curve order) {
   std::vector<particle_set<D>> sets;
   const std::size_t per_axis = D == 1 ? 1500 : D == 2 ? 40 : 12;
   sets.push_back(uniform<D>(1500, 100 + D));
-  sets.push_back(lattice<D>(per_axis, 1.0)); // 2h = 2 spacings: distances hit 2h exactly
+  sets.push_back(lattice<D>(per_axis, 1.0));  // 2h = 2 spacings: distances hit 2h exactly
   sets.push_back(gaussian_blobs<D>(1500, 3, 0.02, 200 + D));
   sets.push_back(coincident<D>(1500, 40, 300 + D));
   for (auto& set : sets) sort_by_key(set, order);
   return sets;
 }
 
-} // namespace ntree_test
+}  // namespace ntree_test
