@@ -8,7 +8,7 @@
 
 #include "sphere_lattice.hh"
 
-#include "specialization/sph/driver.hh"
+#include "specialization/sph/step/driver.hh"
 
 #include "flecsi_lite/runtime.hh"
 

@@ -6,7 +6,7 @@
 
 #include "sphere_lattice.hh"
 
-#include "specialization/sph/driver.hh"
+#include "specialization/sph/step/driver.hh"
 
 #include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"

@@ -5,7 +5,7 @@
 //   mpirun -np 2 evrard apps/evrard/evrard.par [--set particles=50000] [--check-energy 0.01]
 #include "evrard_problem.hh"
 
-#include "specialization/sph/app.hh"
+#include "specialization/sph/run/app.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"

@@ -10,7 +10,7 @@
 
 #include "specialization/analytic/channel_flow.hh"
 #include "specialization/fluid/fluid_model.hh"
-#include "specialization/sph/app.hh"
+#include "specialization/sph/run/app.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/execution.hh"

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "specialization/fluid/fluid_settings.hh"
-#include "specialization/sph/settings.hh"
+#include "specialization/sph/model/settings.hh"
 
 #include "flecsi_lite/runtime.hh"
 

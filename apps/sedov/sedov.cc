@@ -5,7 +5,7 @@
 //   mpirun -np 2 sedov apps/sedov/sedov_3d.par [--set particles_per_side=64] [--check 0.05,1e-3]
 #include "sedov_problem.hh"
 
-#include "specialization/sph/app.hh"
+#include "specialization/sph/run/app.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"

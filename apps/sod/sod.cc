@@ -5,7 +5,7 @@
 //   mpirun -np 2 sod apps/sod/sod_1d.par [--set particles=2000] [--check-l1 0.005,0.005,0.02]
 #include "sod_problem.hh"
 
-#include "specialization/sph/app.hh"
+#include "specialization/sph/run/app.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "specialization/analytic/riemann_exact.hh"
-#include "specialization/sph/driver.hh"
+#include "specialization/sph/step/driver.hh"
 
 #include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"

@@ -23,8 +23,8 @@
 
 #include "specialization/physics/kernels/cubic_spline.hh"
 #include "specialization/physics/viscosity.hh"
-#include "specialization/sph/density.hh"
-#include "specialization/sph/forces.hh"
+#include "specialization/sph/step/density.hh"
+#include "specialization/sph/step/forces.hh"
 
 #include <algorithm>
 #include <chrono>

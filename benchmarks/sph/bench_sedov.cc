@@ -9,7 +9,7 @@
 #include "nominal_clock.hh"
 #include "sedov_problem.hh"
 
-#include "specialization/sph/driver.hh"
+#include "specialization/sph/step/driver.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"

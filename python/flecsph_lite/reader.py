@@ -19,7 +19,7 @@ try:
 except ImportError:  # units are optional
     unyt = None
 
-# H5Part dataset(s) -> snapshot dataset, as specialization/sph/snapshot_layout.hh maps them.
+# H5Part dataset(s) -> snapshot dataset, as specialization/sph/files/snapshot_layout.hh maps them.
 H5PART_TO_SNAPSHOT = {
     ("x", "y", "z"): "Coordinates",
     ("vx", "vy", "vz"): "Velocities",

@@ -4,7 +4,7 @@
 // in every step. Only the fluid app declares them: the gas problems' files are unchanged.
 #pragma once
 
-#include "specialization/sph/fields.hh"
+#include "specialization/sph/model/fields.hh"
 
 namespace flecsph::fluid {
 

@@ -14,7 +14,7 @@
 #include "specialization/fluid/fluid_settings.hh"
 #include "specialization/fluid/solid_walls.hh"
 
-#include "specialization/sph/app.hh"
+#include "specialization/sph/run/app.hh"
 
 #include "flecsi_lite/execution.hh"
 

@@ -6,9 +6,9 @@
 #include "specialization/fluid/fluid_fields.hh"
 #include "specialization/fluid/fluid_settings.hh"
 
-#include "specialization/sph/kernel_at.hh"
-#include "specialization/sph/neighbourhood.hh"
-#include "specialization/sph/tasks.hh"
+#include "specialization/physics/kernels/kernel_at.hh"
+#include "specialization/sph/step/neighbourhood.hh"
+#include "specialization/sph/model/tasks.hh"
 
 #include "specialization/physics/kernels.hh"
 

@@ -6,7 +6,7 @@
 // physics/simd.hh): the SIMD force loop and the scalar code share one formula.
 #pragma once
 
-#include "specialization/physics/simd.hh"
+#include "specialization/numerics/simd.hh"
 
 #include <Kokkos_Core.hpp>
 

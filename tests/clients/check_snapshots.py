@@ -29,7 +29,7 @@ PROGRAM = "check_snapshots"
 SKIP = 77
 failures = []
 
-# Snapshot dataset <- H5Part datasets (specialization/sph/snapshot_layout.hh).
+# Snapshot dataset <- H5Part datasets (specialization/sph/files/snapshot_layout.hh).
 SOURCES = {"Coordinates": ("x", "y", "z"), "Velocities": ("vx", "vy", "vz"), "Masses": ("m",),
            "SmoothingLengths": ("h",), "Densities": ("rho",), "InternalEnergies": ("u",), "Pressures": ("P",),
            "SoundSpeeds": ("cs",), "ParticleIDs": ("id",), "InternalEnergyRates": ("du_dt",), "Potentials": ("phi",)}

@@ -2,7 +2,7 @@
 // dimensionless shape f(q); gives W, dW/dr, (1/r) dW/dr and dW/dh (Price 2012, JCP 231, 759, sec. 2).
 #pragma once
 
-#include "specialization/physics/simd.hh"
+#include "specialization/numerics/simd.hh"
 
 #include <Kokkos_Core.hpp>
 

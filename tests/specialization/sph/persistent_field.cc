@@ -5,8 +5,8 @@
 // On 1 and 2 ranks.
 #include "sph_setup.hh"
 
-#include "specialization/sph/particle_output.hh"
-#include "specialization/sph/restart.hh"
+#include "specialization/sph/files/particle_output.hh"
+#include "specialization/sph/run/restart.hh"
 
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"

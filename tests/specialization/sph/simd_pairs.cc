@@ -6,7 +6,7 @@
 // of the single lane is checked against direct sums in forces.cc and density.cc.
 #include "sph_setup.hh"
 
-#include "specialization/sph/forces.hh"
+#include "specialization/sph/step/forces.hh"
 
 #include <catch2/catch.hpp>
 

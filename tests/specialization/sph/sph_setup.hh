@@ -3,7 +3,7 @@
 // and a direct O(N^2) evaluation of the kernel sums to compare the tasks with.
 #pragma once
 
-#include "specialization/sph/driver.hh"
+#include "specialization/sph/step/driver.hh"
 
 #include "flecsi_lite/execution.hh"
 

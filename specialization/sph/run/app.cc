@@ -1,0 +1,28 @@
+// main() of the SPH apps (app.hh): the framework's app frame with the SPH keys.
+#include "specialization/sph/run/app.hh"
+
+namespace flecsph::sph {
+
+flecsi_lite::app::definition frame_definition(const app_definition& app) {
+  flecsi_lite::app::definition frame;
+  frame.program = app.program;
+  frame.summary = app.summary;
+  frame.declare_parameters = [declare_problem = app.declare_parameters, physics_defaults = app.physics_defaults,
+                              run_defaults = app.run_defaults](flecsi_lite::runtime::parameter_schema& schema) {
+    if (declare_problem) declare_problem(schema);
+    physics_parameters(physics_defaults).declare(schema);
+    run_parameters(run_defaults).declare(schema);
+    statistics_parameters().declare(schema);
+    snapshot_parameters().declare(schema);
+  };
+  frame.files = app.file_defaults;
+  frame.declare_options = app.declare_options;
+  frame.run = app.run;
+  return frame;
+}
+
+int app_main(int argc, char** argv, const app_definition& app) {
+  return flecsi_lite::app::main(argc, argv, frame_definition(app));
+}
+
+}  // namespace flecsph::sph

@@ -1,0 +1,7 @@
+// The SPH step and the app frame for D = 3, compiled once (instances.hh).
+#include "specialization/sph/run/app.hh"
+
+namespace flecsph::sph {
+FLECSPH_SPH_STEP_INSTANCES(, 3)
+FLECSPH_SPH_APP_INSTANCES(, 3)
+}  // namespace flecsph::sph

@@ -1,0 +1,181 @@
+// The density task: rho_a = sum_b m_b W(r_ab, h_a) (seed eq. 1.3), at fixed h or with the adaptive
+// h = eta (m/rho)^(1/D) solved per particle by Newton-Raphson, and the grad-h factor Omega
+// (Springel & Hernquist 2002; Price 2012, JCP 231, 759, sec. 3); with self-gravity also the
+// grad-h gravity factor zeta (Price & Monaghan 2007, MNRAS 374, 1347).
+#pragma once
+
+#include "specialization/physics/kernels/kernel_at.hh"
+#include "specialization/sph/step/neighbourhood.hh"
+#include "specialization/sph/model/settings.hh"
+#include "specialization/sph/model/tasks.hh"
+
+#include "specialization/physics/gravity_softening.hh"
+#include "specialization/physics/kernels.hh"
+#include "specialization/physics/smoothing_length.hh"
+
+#include "flecsi_lite/execution.hh"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace flecsph::sph {
+
+namespace detail {
+/// The density sums' packs: at most 4 lanes. With AVX-512's 8 the task took 1.8x the time of 4
+/// lanes on a Xeon (Sapphire Rapids) while the force sums gained from 8 (docs/performance.md).
+using density_pack = physics::simd::pack_at_most<4>;
+
+/// What the density sums need of a's list, gathered once for all the Newton iterations of h_a:
+/// |r_ab| (one square root per entry, not one per entry and iteration) and m_b per entry in list
+/// order, padded to whole packs with entries out of reach (r = inf, m = 0). One per thread,
+/// reused from target to target.
+struct gathered_pairs {
+  std::vector<double> r, m;
+  std::size_t count = 0;  ///< list entries (the padding excluded)
+};
+
+template<int D>
+void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>* x, const double* m,
+                  gathered_pairs& out) {
+  const std::size_t first = walk.begin(a), count = walk.end(a) - first, W = physics::simd::lanes<density_pack>;
+  const std::size_t padded = (count + W - 1) / W * W;
+  if (out.r.size() < padded) {
+    out.r.resize(padded);
+    out.m.resize(padded);
+  }
+  // Pack by pack; past the end, lanes repeat the last entry and are overwritten by the padding.
+  namespace simd = physics::simd;
+  using T = density_pack;
+  for (std::size_t i = 0; i < count; i += W) {
+    std::size_t b[simd::lanes<T>];
+    T r[D];
+    const T r2 = walk.separations(first + i, first + count, x[a], x, b, r);
+    simd::store(simd::square_root(r2), out.r.data() + i);
+    simd::store(simd::generate<T>([&](std::size_t l) { return m[b[l]]; }), out.m.data() + i);
+  }
+  for (std::size_t i = count; i < padded; ++i) {
+    out.r[i] = std::numeric_limits<double>::infinity();
+    out.m[i] = 0.0;
+  }
+  out.count = count;
+}
+
+/// rho(h) = sum_b m_b W(r_ab, h) and its derivative sum_b m_b dW/dh over a's gathered list, T the
+/// number type of the pair arithmetic (physics/simd.hh); the terms go to striped sums in list
+/// order, so the sums are bitwise those of T = double on every instruction set.
+template<class Kernel, class T = density_pack>
+void density_sums(const gathered_pairs& pairs, double h, double& rho, double& drho_dh) {
+  namespace simd = physics::simd;
+  constexpr std::size_t W = simd::lanes<T>;
+  const kernel_at<Kernel> kernel(h);
+  const double reach = physics::kernel_support * h;
+  simd::striped_sum<T> sum, derivative;
+  const T zero = 0.0;
+  for (std::size_t j = 0; j < pairs.count; j += W) {
+    const T r = simd::load<T>(pairs.r.data() + j), m_b = simd::load<T>(pairs.m.data() + j);
+    const auto inside = !(r >= reach);  // outside the kernel (or padding): the term is zero
+    T w, dw_dh;
+    kernel.value_and_h_derivative(r, w, dw_dh);
+    sum.add(simd::select(inside, m_b * w, zero));
+    derivative.add(simd::select(inside, m_b * dw_dh, zero));
+  }
+  rho = sum.total();
+  drho_dh = derivative.total();
+}
+
+/// zeta_a / Omega_a with zeta_a = (dh_a/drho_a) sum_b m_b d phi(r_ab, h_a) / d h_a (Price & Monaghan
+/// 2007, sec. 3), dh/drho = -h / (3 rho) (0 for a fixed h): the self term b = a included.
+template<class Kernel, int D>
+double gravity_zeta_over_omega(const neighbour_walk<D>& walk, std::size_t a, double h, double rho, double omega,
+                               bool adapt, const vector<D>* x, const double* m) {
+  if constexpr (D != 3) {
+    return 0.0;  // gravity is 3D only (check_gravity_domain)
+  } else {
+    if (!adapt) return 0.0;
+    using softening = physics::softened_gravity<typename Kernel::shape>;
+    const double reach2 = physics::kernel_support * physics::kernel_support * h * h;
+    const vector<D>& x_a = x[a];
+    double sum = 0;
+    vector<D> r;
+    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
+      const std::size_t b = walk.neighbour(j);
+      const double r2 = walk.separation(x_a, x[b], j, r);
+      if (r2 >= reach2) continue;
+      sum += m[b] * softening::h_derivative(std::sqrt(r2), h);
+    }
+    return -h / (D * rho) * sum / omega;
+  }
+}
+
+/// The loop of compute_density; `zeta_over_omega` is null without gravity.
+template<int D, flecsi_lite::privilege Ghost>
+double density_loop(const neighbourhood<D>& neighbours, const physics_settings& settings, double earlier,
+                    const vector<D>* xs, const double* ms, ro<particle_kind> kind, rw<double> h, wo<double> rho,
+                    wo<double> omega, double* zeta_over_omega) {
+  const neighbour_walk<D> walk(neighbours);
+  const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
+  const double half_reach = 0.5 * neighbours.reach;
+  double worst = 0;
+  physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
+    using Kernel = decltype(kernel);
+    flecsi_lite::forall_reduce(
+      targets.size(),
+      [&](std::size_t i, double& local_worst) {
+        const std::size_t a = targets[i];
+        const double h_start = h(a), h_limit = half_reach * h_start;
+        const bool adapt = settings.adaptive_smoothing_length && kind(a) == particle_kind::fluid;
+        double h_a = h_start, rho_a = 0, drho_dh = 0;
+        thread_local gathered_pairs pairs;
+        gather_pairs<D>(walk, a, xs, ms, pairs);
+        for (int iteration = 1;; ++iteration) {
+          density_sums<Kernel>(pairs, h_a, rho_a, drho_dh);
+          if (!adapt || iteration >= settings.h_iterations) break;
+          const double residual = physics::smoothing_length_residual<D>(h_a, rho_a, ms[a], settings.eta);
+          if (std::fabs(residual) < settings.h_tolerance) break;
+          h_a = physics::smoothing_length_newton_step<D>(h_a, rho_a, drho_dh, ms[a], settings.eta);
+          if (h_a > h_limit) break;  // the list may miss neighbours: search again
+        }
+        h(a) = h_a;
+        rho(a) = rho_a;
+        omega(a) = adapt ? physics::grad_h_omega<D>(h_a, rho_a, drho_dh) : 1.0;
+        // At h_a > h_limit the caller searches again and calls the task again: zeta is recomputed.
+        if (zeta_over_omega)
+          zeta_over_omega[a] = gravity_zeta_over_omega<Kernel, D>(walk, a, h_a, rho_a, omega(a), adapt, xs, ms);
+        local_worst = std::max(local_worst, h_a / h_limit);
+      },
+      Kokkos::Max<double>(worst), "sph::compute_density", target_schedule);
+  });
+  return std::max({worst, earlier, 0.0});  // no target: the reduction's identity is -inf
+}
+}  // namespace detail
+
+/// Density (and, with adaptive h, the smoothing length and Omega) of the owned targets of one
+/// part (neighbourhood::targets): launched once with Ghost = na for the interior targets, which
+/// needs no ghost value, and once with Ghost = ro for the boundary ones. Of a neighbour b the sums
+/// read x_b and m_b only; h, kind and the outputs are the target's own. Wall particles keep their
+/// h. Returns the largest of `earlier` (the value of the other part's launch) and h_a / h_limit_a
+/// over this part's targets, where h_limit_a = reach/2 * (h_a at entry) is the largest h for
+/// which a's list is complete: above 1, h grew out of the searched reach (h is then the grown
+/// value, rho is not final) and the caller must search again and call this task again.
+template<int D, flecsi_lite::privilege Ghost>
+double compute_density(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
+                       ro_neighbours<vector<D>, Ghost> x, ro_neighbours<double, Ghost> m, ro<particle_kind> kind,
+                       rw<double> h, wo<double> rho, wo<double> omega) {
+  return detail::density_loop<D, Ghost>(*neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
+                                        nullptr);
+}
+
+/// The same with self-gravity: also zeta_a / Omega_a for the force pass (detail::gravity_zeta_over_omega).
+template<int D, flecsi_lite::privilege Ghost>
+double compute_density_with_gravity(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
+                                    ro_neighbours<vector<D>, Ghost> x, ro_neighbours<double, Ghost> m,
+                                    ro<particle_kind> kind, rw<double> h, wo<double> rho, wo<double> omega,
+                                    wo<double> zeta_over_omega) {
+  return detail::density_loop<D, Ghost>(*neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
+                                        zeta_over_omega.data());
+}
+
+}  // namespace flecsph::sph
