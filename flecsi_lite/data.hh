@@ -3,7 +3,6 @@
 // objects (data other than fields that tasks share), and the persistence of fields (output, restart, initial data) with the I/O that walks them.
 #pragma once
 #include "flecsi_lite/data/field.hh"
-#include "flecsi_lite/data/field_io.hh"
 #include "flecsi_lite/data/field_registry.hh"
 #include "flecsi_lite/data/field_storage.hh"
 #include "flecsi_lite/data/persistence.hh"

@@ -10,6 +10,7 @@
 #include "flecsi_lite/io/collective_agreement.hh"
 #include "flecsi_lite/io/column_source.hh"
 #include "flecsi_lite/io/element_type.hh"
+#include "flecsi_lite/io/field_io.hh"
 #include "flecsi_lite/io/gadget_reader.hh"
 #include "flecsi_lite/io/h5part_reader.hh"
 #include "flecsi_lite/io/h5part_writer.hh"

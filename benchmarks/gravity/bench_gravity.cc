@@ -1,8 +1,8 @@
 // Benchmark of the gravity walk (gravity.hh): time per particle of the walk at theta 0.5 and 0.7
 // (and GADGET-2's relative criterion) against direct summation, with the interactions per
 // particle and the force errors, on Evrard spheres of 1e4 to 1e5 particles, from one run.
-#include "flecsi_lite/topology/ntree/gravity.hh"
-#include "flecsi_lite/topology/ntree/reference/direct_gravity.hh"
+#include "flecsi_lite/topology/ntree/gravity/direct_gravity.hh"
+#include "flecsi_lite/topology/ntree/gravity/gravity.hh"
 #include "tests/flecsi_lite/topology/ntree/gravity_sets.hh"
 
 #include <Kokkos_Core.hpp>

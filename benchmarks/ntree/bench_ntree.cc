@@ -1,13 +1,13 @@
 // Benchmark of the local ntree topology: keys, (key, id) sort and tree build per particle for
 // 1e5 and 1e6 particles, and neighbour searches (group walk, per-target walk, uniform cell list,
 // brute force) on the same data, reported as times per particle and ratios from one run.
-#include "flecsi_lite/topology/ntree/group_walk.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/radius_search.hh"
 #include "flecsi_lite/topology/ntree/reference/brute_force.hh"
 #include "flecsi_lite/topology/ntree/reference/cell_list.hh"
+#include "flecsi_lite/topology/ntree/search/group_walk.hh"
+#include "flecsi_lite/topology/ntree/search/radius_search.hh"
 #include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/sfc/ordering.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"
 
 #include <Kokkos_Core.hpp>

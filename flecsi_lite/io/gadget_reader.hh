@@ -11,7 +11,7 @@
 #pragma once
 
 #include "flecsi_lite/io/column_source.hh"
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 #include "flecsi_lite/runtime/context.hh"
 
 #include <map>

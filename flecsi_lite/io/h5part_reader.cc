@@ -2,13 +2,13 @@
 #include "flecsi_lite/io/h5part_reader.hh"
 
 #include "flecsi_lite/io/collective_agreement.hh"
-#include "flecsi_lite/io/hdf5/collective_open.hh"
-#include "flecsi_lite/io/hdf5/h5part_layout.hh"
-#include "flecsi_lite/io/hdf5/h5part_steps.hh"
-#include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
-#include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
-#include "flecsi_lite/io/hdf5/hdf5_storage.hh"
+#include "flecsi_lite/io/detail/collective_open.hh"
+#include "flecsi_lite/io/detail/h5part_layout.hh"
+#include "flecsi_lite/io/detail/h5part_steps.hh"
+#include "flecsi_lite/io/detail/hdf5_attributes.hh"
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/hdf5_parallel.hh"
+#include "flecsi_lite/io/detail/hdf5_storage.hh"
 #include "flecsi_lite/util/edit_distance.hh"
 
 #include <algorithm>

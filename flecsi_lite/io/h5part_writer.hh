@@ -24,8 +24,8 @@
 #pragma once
 
 #include "flecsi_lite/io/attribute_value.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 #include "flecsi_lite/io/element_type.hh"
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
 #include "flecsi_lite/io/step_info.hh"
 #include "flecsi_lite/runtime/context.hh"
 

@@ -21,8 +21,8 @@
 // every rank (collective_agreement.hh).
 #pragma once
 
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 #include "flecsi_lite/io/element_type.hh"
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
 #include "flecsi_lite/runtime/context.hh"
 
 #include <mpi.h>

@@ -3,8 +3,8 @@
 #include "flecsi_lite/io/xdmf_index.hh"
 
 #include "flecsi_lite/io/collective_agreement.hh"
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 #include "flecsi_lite/io/io_error.hh"
 #include "flecsi_lite/io/output_path.hh"
 

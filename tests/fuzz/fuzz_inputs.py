@@ -165,7 +165,7 @@ def same_bytes(a, b):
 
 
 # libhdf5 1.10 frees a garbage pointer in H5G__link_release_table on some corrupted dense link
-# heaps (flecsi_lite/io/hdf5/h5part_precheck.hh). The reader's forked pre-check catches it when
+# heaps (flecsi_lite/io/detail/h5part_precheck.hh). The reader's forked pre-check catches it when
 # the child's heap crashes too; on some files only the parallel reader's does (seed 13, h5part
 # case 2, since the files grew unit attributes), and the job dies of SIGABRT. Such a case is
 # reported on stderr, not failed, while the earlier output stays intact: the fix (link names

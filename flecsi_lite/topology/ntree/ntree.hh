@@ -9,12 +9,12 @@
 #include "flecsi_lite/execution/execute.hh"
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/ntree/distributed/distribution_stats.hh"
-#include "flecsi_lite/topology/ntree/distributed/local_tree.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/search/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/tree/local_tree.hh"
 
 #include <array>
 #include <cstddef>
@@ -162,4 +162,4 @@ class ntree : public data::topology_base {
 
 }  // namespace flecsi_lite::topology::ntree
 
-#include "flecsi_lite/topology/ntree/distributed/ntree_impl.hh"
+#include "flecsi_lite/topology/ntree/detail/ntree_definitions.hh"

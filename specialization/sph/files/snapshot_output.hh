@@ -7,9 +7,9 @@
 #pragma once
 
 #include "specialization/physics/kernels.hh"
+#include "specialization/sph/files/snapshot_layout.hh"
 #include "specialization/sph/model/fields.hh"
 #include "specialization/sph/model/simulation.hh"
-#include "specialization/sph/files/snapshot_layout.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/data.hh"

@@ -12,16 +12,16 @@
 //   return context.execute(m, state, check);         // under --control-model: no run, no check
 #pragma once
 
-#include "specialization/sph/step/driver.hh"
-#include "specialization/sph/step/gravity.hh"
-#include "specialization/sph/run/instances.hh"
 #include "specialization/sph/files/particle_input.hh"
 #include "specialization/sph/files/particle_output.hh"
-#include "specialization/sph/run/restart.hh"
 #include "specialization/sph/files/snapshot_output.hh"
 #include "specialization/sph/files/snapshot_settings.hh"
-#include "specialization/sph/run/statistics.hh"
 #include "specialization/sph/files/swift_initial_data.hh"
+#include "specialization/sph/run/instances.hh"
+#include "specialization/sph/run/restart.hh"
+#include "specialization/sph/run/statistics.hh"
+#include "specialization/sph/step/driver.hh"
+#include "specialization/sph/step/gravity.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/control.hh"

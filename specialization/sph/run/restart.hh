@@ -14,10 +14,10 @@
 // The file is also a valid H5Part output (ParaView opens it) and valid initial data.
 #pragma once
 
-#include "specialization/sph/step/neighbourhood.hh"
 #include "specialization/sph/files/particle_input.hh"
 #include "specialization/sph/files/particle_output.hh"
 #include "specialization/sph/model/tasks.hh"
+#include "specialization/sph/step/neighbourhood.hh"
 
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"

@@ -3,8 +3,8 @@
 // the totals are bitwise the same on any number of ranks and threads.
 #pragma once
 
-#include "specialization/sph/step/density.hh"
 #include "specialization/sph/model/tasks.hh"
+#include "specialization/sph/step/density.hh"
 
 #include "flecsi_lite/util.hh"
 

@@ -4,10 +4,10 @@
 // adds to it (gravity.hh), plus initial_fields.hh to fill the particles an app creates.
 #pragma once
 
+#include "specialization/sph/model/simulation.hh"
+#include "specialization/sph/model/tasks.hh"
 #include "specialization/sph/step/diagnostics.hh"
 #include "specialization/sph/step/gravity.hh"
 #include "specialization/sph/step/initial_fields.hh"
-#include "specialization/sph/model/simulation.hh"
 #include "specialization/sph/step/sph_model.hh"
 #include "specialization/sph/step/steps.hh"
-#include "specialization/sph/model/tasks.hh"

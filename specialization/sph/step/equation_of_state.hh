@@ -2,8 +2,8 @@
 // the velocity divergence and curl that the Balsara (1995) switch needs (Price 2012, eqs. 100-101).
 #pragma once
 
-#include "specialization/sph/step/density.hh"
 #include "specialization/sph/model/tasks.hh"
+#include "specialization/sph/step/density.hh"
 
 #include "specialization/physics/eos.hh"
 #include "specialization/physics/viscosity.hh"

@@ -5,10 +5,10 @@
 // the tree's acceleration, so that the time step sees the total acceleration.
 #pragma once
 
-#include "specialization/sph/step/density.hh"
-#include "specialization/sph/step/equation_of_state.hh"
 #include "specialization/physics/kernels/kernel_at.hh"
 #include "specialization/sph/model/tasks.hh"
+#include "specialization/sph/step/density.hh"
+#include "specialization/sph/step/equation_of_state.hh"
 
 #include "specialization/physics/viscosity.hh"
 

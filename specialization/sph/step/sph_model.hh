@@ -14,9 +14,9 @@
 //   m.action("advance", "cooling", cool).after("forces");   // runs after forces, before kick
 #pragma once
 
-#include "specialization/sph/step/diagnostics.hh"
-#include "specialization/sph/run/instances.hh"
 #include "specialization/sph/model/simulation.hh"
+#include "specialization/sph/run/instances.hh"
+#include "specialization/sph/step/diagnostics.hh"
 #include "specialization/sph/step/steps.hh"
 
 #include "flecsi_lite/control.hh"

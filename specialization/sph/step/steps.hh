@@ -4,13 +4,13 @@
 // kicks of the leapfrog, and the choice of the next time step.
 #pragma once
 
+#include "specialization/sph/model/simulation.hh"
 #include "specialization/sph/step/density.hh"
 #include "specialization/sph/step/equation_of_state.hh"
 #include "specialization/sph/step/forces.hh"
 #include "specialization/sph/step/integrator.hh"
 #include "specialization/sph/step/list_reuse.hh"
 #include "specialization/sph/step/redistribution.hh"
-#include "specialization/sph/model/simulation.hh"
 #include "specialization/sph/step/time_bins.hh"
 
 #include "flecsi_lite/execution.hh"

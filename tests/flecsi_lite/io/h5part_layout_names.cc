@@ -1,7 +1,7 @@
 // H5Part step group names: Step#<k> written and parsed back; other names are not steps.
 #include <catch2/catch.hpp>
 
-#include "flecsi_lite/io/hdf5/h5part_layout.hh"
+#include "flecsi_lite/io/detail/h5part_layout.hh"
 
 using namespace flecsi_lite::io::h5part;
 

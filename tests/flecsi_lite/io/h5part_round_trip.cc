@@ -4,9 +4,9 @@
 #include <catch2/catch.hpp>
 
 #include "flecsi_lite/io/checkpoint.hh"
+#include "flecsi_lite/io/detail/h5part_layout.hh"
 #include "flecsi_lite/io/h5part_reader.hh"
 #include "flecsi_lite/io/h5part_writer.hh"
-#include "flecsi_lite/io/hdf5/h5part_layout.hh"
 #include "tests/support/collective_checks.hh"
 
 #include <cstdint>

@@ -3,9 +3,9 @@
 // its reason reported.
 #include <catch2/catch.hpp>
 
-#include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/hdf5_attributes.hh"
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 
 #include <cstdio>
 

@@ -10,8 +10,8 @@
 // in the checkpoint) ends bitwise where the run it continues ends.
 #include "sph_setup.hh"
 
-#include "specialization/sph/step/gravity.hh"
 #include "specialization/sph/run/restart.hh"
+#include "specialization/sph/step/gravity.hh"
 
 #include "flecsi_lite/io.hh"
 

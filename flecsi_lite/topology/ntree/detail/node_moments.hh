@@ -2,8 +2,8 @@
 // quadrupole; Barnes & Hut 1986, Hernquist 1987) from its particles or from its children in order.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/multipole.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
+#include "flecsi_lite/topology/ntree/tree/multipole.hh"
 
 #include <algorithm>
 #include <cstdint>

@@ -2,9 +2,9 @@
 // and on periodicity, the check that periodic images are unique, and the user-functor adaptor.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/search/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 
 #include <cassert>
 #include <cstdint>

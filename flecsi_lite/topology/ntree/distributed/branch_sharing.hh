@@ -8,8 +8,8 @@
 #include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 
 #include <mpi.h>
 

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
-#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/search/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
 #include <cstddef>

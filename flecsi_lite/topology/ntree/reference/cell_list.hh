@@ -3,7 +3,7 @@
 // largest interaction radius, each target scanning its own and the adjacent 3^D - 1 cells.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/search/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
 #include <algorithm>

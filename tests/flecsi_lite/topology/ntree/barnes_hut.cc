@@ -2,7 +2,7 @@
 // the sources, theta = 0 gives the direct sum exactly, the monopole + quadrupole force converges
 // to the direct sum as theta shrinks (the quadrupole beating the monopole alone), and the
 // acceleration is minus the gradient of the potential.
-#include "flecsi_lite/topology/ntree/barnes_hut.hh"
+#include "flecsi_lite/topology/ntree/gravity/barnes_hut.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"
 
 #include <catch2/catch.hpp>

@@ -2,8 +2,8 @@
 // partition the particles, theta = 0 is the direct sum bit for bit (momentum to round-off),
 // force-error percentiles and potential energy at theta 0.5 and 0.7 on uniform, Plummer and
 // Evrard spheres, the quadrupoles, the near-field rule and GADGET-2's relative criterion.
-#include "flecsi_lite/topology/ntree/gravity.hh"
-#include "flecsi_lite/topology/ntree/reference/direct_gravity.hh"
+#include "flecsi_lite/topology/ntree/gravity/gravity.hh"
+#include "flecsi_lite/topology/ntree/gravity/direct_gravity.hh"
 #include "tests/flecsi_lite/topology/ntree/gravity_sets.hh"
 
 #include <catch2/catch.hpp>

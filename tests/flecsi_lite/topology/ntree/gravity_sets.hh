@@ -3,7 +3,7 @@
 // Newtonian pair plain or softened by the cubic spline (Price & Monaghan 2007, MNRAS 374, 1347).
 #pragma once
 
-#include "flecsi_lite/topology/ntree/gravity.hh"
+#include "flecsi_lite/topology/ntree/gravity/gravity.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"
 
 #include <algorithm>

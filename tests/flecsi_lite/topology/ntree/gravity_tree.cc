@@ -6,7 +6,7 @@
 
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/ntree.hh"
-#include "flecsi_lite/topology/ntree/reference/direct_gravity.hh"
+#include "flecsi_lite/topology/ntree/gravity/direct_gravity.hh"
 #include "tests/flecsi_lite/topology/ntree/gravity_sets.hh"
 #include "tests/flecsi_lite/topology/ntree/harness.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"

@@ -2,7 +2,7 @@
 // neighbours found through the per-group interaction lists equal the brute-force ones exactly
 // and in ascending order, for gather and symmetric searches, any group size or mass, some
 // targets only, by callback and as CSR lists.
-#include "flecsi_lite/topology/ntree/group_walk.hh"
+#include "flecsi_lite/topology/ntree/search/group_walk.hh"
 #include "tests/flecsi_lite/topology/ntree/search_checks.hh"
 
 #include <catch2/catch.hpp>

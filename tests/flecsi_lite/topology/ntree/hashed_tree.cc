@@ -2,7 +2,7 @@
 // respect the bucket, hash lookups find every node, and the bottom-up moments (mass, centre,
 // bounds, largest h, quadrupole) equal direct sums over each node's particles; the quadrupole,
 // combined by parallel-axis shifts, is exactly symmetric with the trace of a traceless 3D tensor.
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"
 
 #include <catch2/catch.hpp>

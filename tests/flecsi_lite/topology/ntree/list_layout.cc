@@ -3,7 +3,7 @@
 // rows and entries (the local tree's storage order) are the default lists, renamed; and a
 // repeated search writes the lists in place, with little spare room, walking twice only when
 // the lists outgrow the room of the last ones.
-#include "flecsi_lite/topology/ntree/group_walk.hh"
+#include "flecsi_lite/topology/ntree/search/group_walk.hh"
 #include "tests/flecsi_lite/topology/ntree/search_checks.hh"
 
 #include <catch2/catch.hpp>

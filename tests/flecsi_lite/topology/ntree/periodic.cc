@@ -1,8 +1,8 @@
 // Tests of periodic searches: along any subset of axes, in boxes of unequal periods, the radius
 // search and the group walk find exactly the brute-force image pairs with their shifts, which
 // agree with an independent minimum-image computation; unsafe uses are refused.
-#include "flecsi_lite/topology/ntree/group_walk.hh"
-#include "flecsi_lite/topology/ntree/radius_search.hh"
+#include "flecsi_lite/topology/ntree/search/group_walk.hh"
+#include "flecsi_lite/topology/ntree/search/radius_search.hh"
 #include "tests/flecsi_lite/topology/ntree/search_checks.hh"
 
 #include <catch2/catch.hpp>

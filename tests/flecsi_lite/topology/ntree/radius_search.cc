@@ -1,6 +1,6 @@
 // Tests of the per-target radius search: gather and symmetric neighbour lists, by callback and
 // in CSR form, for all or some targets, equal exactly (same order) to the brute-force search.
-#include "flecsi_lite/topology/ntree/radius_search.hh"
+#include "flecsi_lite/topology/ntree/search/radius_search.hh"
 #include "tests/flecsi_lite/topology/ntree/search_checks.hh"
 
 #include <catch2/catch.hpp>

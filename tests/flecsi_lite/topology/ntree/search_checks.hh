@@ -2,9 +2,9 @@
 // comparison of neighbour lists with the brute-force reference, and callback results as lists.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/reference/brute_force.hh"
+#include "flecsi_lite/topology/ntree/search/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 #include "tests/flecsi_lite/topology/ntree/particle_sets.hh"
 
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
 // The shared top of the distributed gravity tree (locally essential trees, Warren & Salmon 1993):
 // the cells straddling rank boundaries from an allgather of the ranks' end keys, their global
 // counts, the top tree every rank computes identically, and the target groups of the global tree.
-#include "flecsi_lite/topology/ntree/detail/gravity_top_tree.hh"
+#include "flecsi_lite/topology/ntree/gravity/detail/gravity_top_tree.hh"
 
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/topology/ntree/detail/node_moments.hh"

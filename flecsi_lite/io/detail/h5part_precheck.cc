@@ -1,9 +1,9 @@
 // Crash check of an H5Part file's metadata in a forked child (see h5part_precheck.hh).
-#include "flecsi_lite/io/hdf5/h5part_precheck.hh"
+#include "flecsi_lite/io/detail/h5part_precheck.hh"
 
-#include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/hdf5_attributes.hh"
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 
 #include <hdf5.h>
 #include <signal.h>

@@ -2,7 +2,7 @@
 // communicator, and collective data transfers (every rank takes part in each read and write).
 #pragma once
 
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 
 #include <mpi.h>
 

@@ -5,11 +5,11 @@
 
 #include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/detail/node_moments.hh"
-#include "flecsi_lite/topology/ntree/detail/node_table.hh"
-#include "flecsi_lite/topology/ntree/detail/search_node.hh"
-#include "flecsi_lite/topology/ntree/multipole.hh"
 #include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
+#include "flecsi_lite/topology/ntree/tree/detail/node_table.hh"
+#include "flecsi_lite/topology/ntree/tree/detail/search_node.hh"
+#include "flecsi_lite/topology/ntree/tree/multipole.hh"
 
 #include <algorithm>
 #include <cassert>

@@ -1,7 +1,7 @@
 // Finishing, renaming and abandoning files written under a temporary name (partial_file.hh).
-#include "flecsi_lite/io/hdf5/partial_file.hh"
+#include "flecsi_lite/io/detail/partial_file.hh"
 
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
 #include "flecsi_lite/io/output_path.hh"
 
 #include <hdf5.h>

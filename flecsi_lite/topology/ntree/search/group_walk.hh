@@ -4,13 +4,13 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
-#include "flecsi_lite/topology/ntree/detail/list_filter.hh"
-#include "flecsi_lite/topology/ntree/detail/neighbour_list_builder.hh"
 #include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
-#include "flecsi_lite/topology/ntree/radius_search.hh"
+#include "flecsi_lite/topology/ntree/search/detail/list_filter.hh"
+#include "flecsi_lite/topology/ntree/search/detail/neighbour_list_builder.hh"
+#include "flecsi_lite/topology/ntree/search/neighbour_lists.hh"
+#include "flecsi_lite/topology/ntree/search/radius_search.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 
 #include <algorithm>
 #include <array>

@@ -1,8 +1,8 @@
 // Listing the steps of an H5Part file (see h5part_steps.hh).
-#include "flecsi_lite/io/hdf5/h5part_steps.hh"
+#include "flecsi_lite/io/detail/h5part_steps.hh"
 
-#include "flecsi_lite/io/hdf5/h5part_layout.hh"
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/h5part_layout.hh"
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
 #include "flecsi_lite/io/io_error.hh"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // Build of the distributed gravity tree (locally essential trees, Warren & Salmon 1993): the local
 // tree of the owned particles split as the global tree T splits, the shared top tree, this rank's
 // target groups of T and the imports its walks need (gravity_top_tree.cc, gravity_essential.cc).
-#include "flecsi_lite/topology/ntree/distributed/gravity_tree.hh"
+#include "flecsi_lite/topology/ntree/gravity/gravity_tree.hh"
 
 namespace flecsi_lite::topology::ntree {
 

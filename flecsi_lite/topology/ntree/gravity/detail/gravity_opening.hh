@@ -4,8 +4,8 @@
 // (Springel 2005, MNRAS 364, 1105, eq. 18 and sec. 3.1).
 #pragma once
 
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 
 #include <algorithm>
 #include <cmath>

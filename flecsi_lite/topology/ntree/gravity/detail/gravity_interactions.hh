@@ -4,10 +4,10 @@
 // direct-summation reference.
 #pragma once
 
-#include "flecsi_lite/topology/ntree/detail/gravity_opening.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/multipole.hh"
+#include "flecsi_lite/topology/ntree/gravity/detail/gravity_opening.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/tree/multipole.hh"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Property lists for parallel HDF5 (see hdf5_parallel.hh).
-#include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
+#include "flecsi_lite/io/detail/hdf5_parallel.hh"
 
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
 #include "flecsi_lite/io/io_error.hh"
 
 namespace flecsi_lite::io {

@@ -3,11 +3,11 @@
 // bitwise the same for any number of ranks (docs/programming-model.md, "Distributed gravity").
 #pragma once
 
-#include "flecsi_lite/topology/ntree/detail/gravity_top_tree.hh"
-#include "flecsi_lite/topology/ntree/gravity.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/gravity/detail/gravity_top_tree.hh"
+#include "flecsi_lite/topology/ntree/gravity/gravity.hh"
 #include "flecsi_lite/topology/ntree/sfc/keys.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 
 #include <mpi.h>
 

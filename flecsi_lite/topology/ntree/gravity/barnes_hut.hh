@@ -4,8 +4,8 @@
 #pragma once
 
 #include "flecsi_lite/topology/ntree/detail/search_dispatch.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 
 #include <cassert>
 #include <cstdint>

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
-#include "flecsi_lite/topology/ntree/detail/gravity_interactions.hh"
+#include "flecsi_lite/topology/ntree/gravity/detail/gravity_interactions.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
 
 #include <cstddef>

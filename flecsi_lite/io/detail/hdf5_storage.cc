@@ -1,7 +1,7 @@
 // Plausibility bounds on declared HDF5 extents (see hdf5_storage.hh).
-#include "flecsi_lite/io/hdf5/hdf5_storage.hh"
+#include "flecsi_lite/io/detail/hdf5_storage.hh"
 
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 
 #include <limits>
 

@@ -1,10 +1,10 @@
 // Collective read-only open of an HDF5 file (see collective_open.hh).
-#include "flecsi_lite/io/hdf5/collective_open.hh"
+#include "flecsi_lite/io/detail/collective_open.hh"
 
 #include "flecsi_lite/io/collective_agreement.hh"
-#include "flecsi_lite/io/hdf5/h5part_precheck.hh"
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
-#include "flecsi_lite/io/hdf5/hdf5_parallel.hh"
+#include "flecsi_lite/io/detail/h5part_precheck.hh"
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/hdf5_parallel.hh"
 #include "flecsi_lite/io/io_error.hh"
 
 #include <cerrno>

@@ -6,11 +6,11 @@
 
 #include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/topology/ntree/distributed/sorted_runs.hh"
-#include "flecsi_lite/topology/ntree/group_walk.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/search/group_walk.hh"
+#include "flecsi_lite/topology/ntree/search/neighbour_lists.hh"
 #include "flecsi_lite/topology/ntree/sfc/ordering.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 
 #include <cstddef>
 #include <cstdint>

@@ -3,10 +3,10 @@
 // particles, and the exchange steps (defined in distributed/gravity_top_tree.cc, gravity_essential.cc).
 #pragma once
 
-#include "flecsi_lite/topology/ntree/gravity.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/multipole.hh"
+#include "flecsi_lite/topology/ntree/gravity/gravity.hh"
 #include "flecsi_lite/topology/ntree/sfc/keys.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/tree/multipole.hh"
 
 #include <mpi.h>
 

@@ -2,11 +2,11 @@
 // each rank walks the other ranks' target groups over its own subtrees with the walk's opening
 // test and returns what those walks reach (one MPI_Alltoallv); the receiver links it below the
 // shared top tree, next to its own local tree.
-#include "flecsi_lite/topology/ntree/detail/gravity_top_tree.hh"
+#include "flecsi_lite/topology/ntree/gravity/detail/gravity_top_tree.hh"
 
 #include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/runtime/context.hh"
-#include "flecsi_lite/topology/ntree/detail/gravity_opening.hh"
+#include "flecsi_lite/topology/ntree/gravity/detail/gravity_opening.hh"
 
 #include <algorithm>
 #include <atomic>

@@ -5,10 +5,10 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
-#include "flecsi_lite/topology/ntree/detail/gravity_interactions.hh"
-#include "flecsi_lite/topology/ntree/hashed_tree.hh"
-#include "flecsi_lite/topology/ntree/multipole.hh"
+#include "flecsi_lite/topology/ntree/gravity/detail/gravity_interactions.hh"
 #include "flecsi_lite/topology/ntree/space.hh"
+#include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
+#include "flecsi_lite/topology/ntree/tree/multipole.hh"
 
 #include <algorithm>
 #include <atomic>

@@ -1,10 +1,10 @@
 // Scalar HDF5 attributes (see hdf5_attributes.hh).
-#include "flecsi_lite/io/hdf5/hdf5_attributes.hh"
+#include "flecsi_lite/io/detail/hdf5_attributes.hh"
 
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/hdf5_storage.hh"
 #include "flecsi_lite/io/element_type.hh"
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
-#include "flecsi_lite/io/hdf5/hdf5_storage.hh"
 
 #include <vector>
 

@@ -1,6 +1,6 @@
 // Fields in H5Part files by their persistence: the walk over a topology's registered fields that
 // writes and reads them (field_io.hh), with the values checked on every rank alike.
-#include "flecsi_lite/data/field_io.hh"
+#include "flecsi_lite/io/field_io.hh"
 
 #include "flecsi_lite/execution/executor.hh"
 #include "flecsi_lite/io/collective_agreement.hh"

@@ -3,7 +3,7 @@
 // the GADGET/SWIFT readers share it).
 #pragma once
 
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 
 #include <mpi.h>
 

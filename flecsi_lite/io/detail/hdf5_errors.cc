@@ -1,5 +1,5 @@
 // Quiet HDF5 error handling and extraction of HDF5's own reason for a failure.
-#include "flecsi_lite/io/hdf5/hdf5_errors.hh"
+#include "flecsi_lite/io/detail/hdf5_errors.hh"
 
 namespace flecsi_lite::io {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "flecsi_lite/io/collective_agreement.hh"
-#include "flecsi_lite/io/hdf5/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/hdf5_handle.hh"
 
 #include <mpi.h>
 
