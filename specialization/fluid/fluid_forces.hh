@@ -9,8 +9,8 @@
 #include "specialization/fluid/fluid_settings.hh"
 
 #include "specialization/physics/kernels/kernel_at.hh"
+#include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
-#include "specialization/sph/step/neighbourhood.hh"
 
 #include "specialization/physics/kernels.hh"
 

@@ -16,9 +16,9 @@
 // neighbours; with adaptive_smoothing_length = false it runs: a particle at rest in its box).
 #pragma once
 
+#include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
 #include "specialization/sph/step/initial_fields.hh"
-#include "specialization/sph/step/neighbourhood.hh"
 
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"

@@ -3,10 +3,10 @@
 // their own state from it (problem parameters, output files).
 #pragma once
 
+#include "specialization/sph/model/conserved.hh"
+#include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/settings.hh"
 #include "specialization/sph/model/timeline.hh"
-#include "specialization/sph/step/conserved.hh"
-#include "specialization/sph/step/neighbourhood.hh"
 
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/topology/ntree.hh"

@@ -16,8 +16,8 @@
 
 #include "specialization/sph/files/particle_input.hh"
 #include "specialization/sph/files/particle_output.hh"
+#include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
-#include "specialization/sph/step/neighbourhood.hh"
 
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"

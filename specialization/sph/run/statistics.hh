@@ -10,7 +10,7 @@
 // last header line, the columns' names separated by spaces, that a restart checks and keeps.
 #pragma once
 
-#include "specialization/sph/step/conserved.hh"
+#include "specialization/sph/model/conserved.hh"
 
 #include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"

@@ -5,9 +5,9 @@
 #pragma once
 
 #include "specialization/physics/kernels/kernel_at.hh"
+#include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/settings.hh"
 #include "specialization/sph/model/tasks.hh"
-#include "specialization/sph/step/neighbourhood.hh"
 
 #include "specialization/physics/gravity_softening.hh"
 #include "specialization/physics/kernels.hh"

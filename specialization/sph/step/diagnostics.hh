@@ -3,8 +3,8 @@
 // closing summary.
 #pragma once
 
+#include "specialization/sph/model/conserved.hh"
 #include "specialization/sph/model/simulation.hh"
-#include "specialization/sph/step/conserved.hh"
 
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/runtime.hh"

@@ -4,8 +4,8 @@
 // the lists lack, the same test as the ghosts' (redistribution.hh). One reduction measures both.
 #pragma once
 
+#include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
-#include "specialization/sph/step/neighbourhood.hh"
 #include "specialization/sph/step/redistribution.hh"
 
 #include <algorithm>

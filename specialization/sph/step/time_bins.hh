@@ -18,11 +18,11 @@
 // depend on the rank count.
 #pragma once
 
+#include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/simulation.hh"
 #include "specialization/sph/model/tasks.hh"
 #include "specialization/sph/model/timeline.hh"
 #include "specialization/sph/step/integrator.hh"
-#include "specialization/sph/step/neighbourhood.hh"
 
 #include "specialization/physics/kernels.hh"
 
