@@ -6,6 +6,7 @@
 #include "flecsi_lite/runtime/name_table.hh"
 #include "flecsi_lite/runtime/options.hh"
 #include "flecsi_lite/runtime/parameter_block.hh"
+#include "flecsi_lite/runtime/parameter_text.hh"
 #include "flecsi_lite/runtime/parameters.hh"
 #include "flecsi_lite/runtime/runtime.hh"
 #include "flecsi_lite/runtime/thread_share.hh"

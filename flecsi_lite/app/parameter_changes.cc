@@ -3,7 +3,7 @@
 
 #include "flecsi_lite/app/file_settings.hh"
 #include "flecsi_lite/app/run_limits.hh"
-#include "flecsi_lite/runtime/detail/parameter_text.hh"
+#include "flecsi_lite/runtime/parameter_text.hh"
 #include "flecsi_lite/runtime/parameters.hh"
 
 #include <sstream>

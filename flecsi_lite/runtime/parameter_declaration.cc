@@ -2,8 +2,8 @@
 // checking of value text (parameters.hh).
 #include "flecsi_lite/runtime/parameters.hh"
 
-#include "flecsi_lite/runtime/detail/parameter_text.hh"
 #include "flecsi_lite/runtime/name_table.hh"
+#include "flecsi_lite/runtime/parameter_text.hh"
 
 #include <algorithm>
 

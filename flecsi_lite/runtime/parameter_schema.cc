@@ -1,7 +1,7 @@
 // The keys an application accepts (parameters.hh): declaration in order, and the help text.
 #include "flecsi_lite/runtime/parameters.hh"
 
-#include "flecsi_lite/runtime/detail/parameter_text.hh"
+#include "flecsi_lite/runtime/parameter_text.hh"
 
 namespace flecsi_lite::runtime {
 

@@ -1,6 +1,6 @@
 // Text of parameter files: trimming, comments, keys, and locale-independent conversion of value
-// text to reals, integers, booleans, strings and lists of reals (detail/parameter_text.hh).
-#include "flecsi_lite/runtime/detail/parameter_text.hh"
+// text to reals, integers, booleans, strings and lists of reals (parameter_text.hh).
+#include "flecsi_lite/runtime/parameter_text.hh"
 
 #include <algorithm>
 #include <cctype>

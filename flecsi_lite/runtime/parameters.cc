@@ -2,7 +2,7 @@
 // read by rank 0 and broadcast, then command-line overrides; typed values with their origins.
 #include "flecsi_lite/runtime/parameters.hh"
 
-#include "flecsi_lite/runtime/detail/parameter_text.hh"
+#include "flecsi_lite/runtime/parameter_text.hh"
 #include "flecsi_lite/util/edit_distance.hh"
 
 #include <algorithm>
