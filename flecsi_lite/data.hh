@@ -5,6 +5,7 @@
 #include "flecsi_lite/data/field.hh"
 #include "flecsi_lite/data/field_registry.hh"
 #include "flecsi_lite/data/field_storage.hh"
+#include "flecsi_lite/data/ghost_plan_builder.hh"
 #include "flecsi_lite/data/persistence.hh"
 #include "flecsi_lite/data/privilege.hh"
 #include "flecsi_lite/data/topology_base.hh"

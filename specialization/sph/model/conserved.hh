@@ -4,7 +4,6 @@
 #pragma once
 
 #include "specialization/sph/model/tasks.hh"
-#include "specialization/sph/step/density.hh"
 
 #include "flecsi_lite/util.hh"
 

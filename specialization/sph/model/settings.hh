@@ -8,7 +8,6 @@
 #include "specialization/physics/kernels.hh"
 #include "specialization/physics/viscosity.hh"
 
-#include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
 #include "flecsi_lite/topology/ntree.hh"
 
@@ -140,8 +139,5 @@ double checked_length(const std::string& program, const std::string& what, doubl
 double checked_positive(const std::string& program, const std::string& what, double value, const std::string& keys);
 /// llround(value) when value is in [0, most_particles] (NaN is not): counts of particles, layers.
 std::int64_t checked_count(const std::string& program, const std::string& what, double value, const std::string& keys);
-
-/// Files a run reads and writes (the file keys of the app frame); an empty name is "none".
-using io_settings = flecsi_lite::app::file_settings;
 
 }  // namespace flecsph::sph

@@ -40,6 +40,9 @@
 
 namespace flecsph::sph {
 
+/// Files a run reads and writes (the file keys of the app frame); an empty name is "none".
+using io_settings = flecsi_lite::app::file_settings;
+
 /// A run of an app: the simulation plus its files.
 template<int D>
 struct app_state : simulation<D> {

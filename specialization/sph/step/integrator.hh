@@ -11,8 +11,8 @@
 // path length to its `drift` field, which tells when to distribute the particles again.
 #pragma once
 
+#include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
-#include "specialization/sph/step/density.hh"
 
 #include "flecsi_lite/topology/ntree.hh"
 

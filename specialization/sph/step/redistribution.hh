@@ -4,8 +4,8 @@
 // their smoothing lengths could have brought a missing particle within reach.
 #pragma once
 
+#include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
-#include "specialization/sph/step/density.hh"
 
 #include <algorithm>
 
