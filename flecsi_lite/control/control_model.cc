@@ -16,7 +16,7 @@ std::size_t model_structure::find_point(const std::string& name) const {
 std::size_t model_structure::add_point(const std::string& name, std::size_t cycle) {
   for (auto& p : points_)
     if (p.name == name) throw control_error("control point '" + name + "' declared twice");
-  points_.push_back({name, {}, cycle, {}});
+  points_.push_back({name, {}, cycle, {}, false});
   return points_.size() - 1;
 }
 
@@ -26,6 +26,23 @@ std::size_t model_structure::add_cycle(const std::string& name, const std::vecto
   cycles_.push_back({name, points_.size(), points_.size() + names.size() - 1});
   for (auto& n : names) add_point(n, c);
   return c;
+}
+
+std::size_t model_structure::add_stage(const std::string& name) {
+  const std::size_t p = add_point(name);
+  points_[p].is_stage = true;
+  return p;
+}
+
+action_handle model_structure::add_stage_run(const std::string& point, const std::string& stage) {
+  const std::size_t s = find_point(stage);
+  if (!points_[s].is_stage)
+    throw control_error("'" + stage + "' is a control point, not a stage: only a stage is run by an action");
+  if (points_[find_point(point)].is_stage)
+    throw control_error("stage '" + point + "' cannot run stage '" + stage + "': stages run from control points only");
+  const action_handle h = add_action(point, stage);
+  points_[h.point].actions[h.index].stage = s;
+  return h;
 }
 
 action_handle model_structure::add_action(const std::string& point, const std::string& name) {
@@ -170,11 +187,13 @@ void model_structure::write_graphviz(std::ostream& out, const std::string& title
       out << "  subgraph cluster_cycle_" << open_cycle << " {\n    label=\"cycle: " << cycles_[open_cycle].name
           << "\";\n    style=dashed;\n";
     }
-    out << "  subgraph cluster_point_" << p << " {\n    label=\"" << point.name << "\";\n    style=filled;"
-        << " fillcolor=\"#eef3fb\";\n    p" << p << " [shape=point, style=invis];\n";
+    out << "  subgraph cluster_point_" << p << " {\n    label=\"" << (point.is_stage ? "stage: " : "") << point.name
+        << "\";\n    style=filled; fillcolor=\"" << (point.is_stage ? "#eaf5e4" : "#eef3fb") << "\";\n    p" << p
+        << " [shape=point, style=invis];\n";
     // Placed actions (what an app inserted into someone else's point) stand out.
     for (std::size_t a = 0; a < point.actions.size(); ++a) {
       out << "    p" << p << "a" << a << " [label=\"" << point.actions[a].name << "\"";
+      if (point.actions[a].stage != npos) out << ", shape=box3d";
       if (!point.actions[a].placement.empty())
         out << ", style=\"rounded,filled\", fillcolor=\"#fdd9a8\", tooltip=\"placed " << point.actions[a].placement
             << "\"";
@@ -185,10 +204,21 @@ void model_structure::write_graphviz(std::ostream& out, const std::string& title
     out << "  }\n";
   }
   if (open_cycle != npos) out << "  }\n";
-  // Control flow between points, and the back edge of each cycle.
-  for (std::size_t p = 0; p + 1 < points_.size(); ++p)
-    out << "  p" << p << " -> p" << p + 1 << " [ltail=cluster_point_" << p << ", lhead=cluster_point_" << p + 1
-        << ", color=\"#1f77b4\", penwidth=2];\n";
+  // Control flow between points (stages aside), the back edge of each cycle, and each action
+  // that runs a stage to that stage.
+  std::size_t previous = npos;
+  for (std::size_t p = 0; p < points_.size(); ++p) {
+    if (points_[p].is_stage) continue;
+    if (previous != npos)
+      out << "  p" << previous << " -> p" << p << " [ltail=cluster_point_" << previous << ", lhead=cluster_point_" << p
+          << ", color=\"#1f77b4\", penwidth=2];\n";
+    previous = p;
+  }
+  for (std::size_t p = 0; p < points_.size(); ++p)
+    for (std::size_t a = 0; a < points_[p].actions.size(); ++a)
+      if (const std::size_t stage = points_[p].actions[a].stage; stage != npos)
+        out << "  p" << p << "a" << a << " -> p" << stage << " [lhead=cluster_point_" << stage
+            << ", color=\"#2ca02c\", style=dotted, label=\"runs\"];\n";
   for (const auto& c : cycles_)
     out << "  p" << c.last_point << " -> p" << c.first_point << " [ltail=cluster_point_" << c.last_point
         << ", lhead=cluster_point_" << c.first_point << ", color=\"#d62728\", style=dashed, label=\"repeat\"];\n";

@@ -4,12 +4,19 @@
 // between actions of that point (topological sort; ties broken by registration order). A
 // dependency cycle is an error at start-up that names the actions involved.
 //
+// A STAGE is a named group of actions, ordered like a point's, that is not in the sequence: an
+// action of one or more points runs it (run_stage). What is written once in a stage runs
+// wherever the stage runs, so a task placed in it once runs at every one of those places (the
+// SPH step's force evaluation runs in "initialize" and in every "advance").
+//
 //   control_model<state> m;
 //   m.point("initialize").cycle("main", {"advance", "analyze"}, [](state& s) { return s.step < 10; })
 //    .point("finalize");
 //   auto density = m.action("advance", "density", compute_density);
 //   auto forces = m.action("advance", "forces", compute_forces);
 //   m.depends(forces, density);   // forces after density
+//   m.stage("evaluate");          // actions registered on a stage run where a point runs it:
+//   m.run_stage("initialize", "evaluate");
 //   return m.run(s);
 #pragma once
 
@@ -43,6 +50,7 @@ class model_structure {
     std::string name;
     std::vector<std::size_t> after;  // indices of actions of the same point
     std::string placement;           // "after forces", "before kick", or empty when not placed
+    std::size_t stage = npos;        // the stage this action runs (run_stage), or npos
   };
   struct point_info {
     std::string name;
@@ -51,6 +59,7 @@ class model_structure {
     /// Tie-break order of the topological sort: registration order, except that a placed action
     /// sits next to its anchor, so that it runs exactly there.
     std::vector<std::size_t> sequence;
+    bool is_stage = false;  // a stage: not in the sequence, run by actions of points
   };
   struct cycle_info {
     std::string name;
@@ -60,7 +69,10 @@ class model_structure {
 
   std::size_t add_point(const std::string& name, std::size_t cycle = npos);
   std::size_t add_cycle(const std::string& name, const std::vector<std::string>& points);
+  std::size_t add_stage(const std::string& name);
   action_handle add_action(const std::string& point, const std::string& name);
+  /// An action named after `stage` on `point` that runs the stage's actions; a stage runs no stage.
+  action_handle add_stage_run(const std::string& point, const std::string& stage);
   void add_dependency(action_handle later, action_handle earlier);
   /// The action called `name` on `point`; throws control_error naming the point's actions.
   action_handle find_action(const std::string& point, const std::string& name) const;
@@ -133,6 +145,23 @@ class control_model {
     return *this;
   }
 
+  /// A stage: actions registered on it by name like a point's (action, depends, replace, find,
+  /// order), that run only where an action of a point runs it (run_stage).
+  control_model& stage(const std::string& name) {
+    structure_.add_stage(name);
+    return *this;
+  }
+  /// Registers on `point` an action named `stage` that runs the stage's actions in their order,
+  /// when `when(state)` holds (always without it). Place it like any action.
+  new_action run_stage(const std::string& point, const std::string& stage, predicate when = nullptr) {
+    const action_handle h = structure_.add_stage_run(point, stage);
+    if (functions_.size() <= h.point) functions_.resize(h.point + 1);
+    if (conditions_.size() <= h.point) conditions_.resize(h.point + 1);
+    functions_[h.point].emplace_back();
+    conditions_[h.point].resize(h.index + 1);
+    conditions_[h.point][h.index] = std::move(when);
+    return {structure_, h};
+  }
   /// Registers an action on `point`; unplaced, it runs after the actions registered before it
   /// that it does not precede by a dependency. `.after(name)` / `.before(name)` place it.
   new_action action(const std::string& point, const std::string& name, action_function f) {
@@ -196,31 +225,40 @@ class control_model {
     for (std::size_t p = 0; p < structure_.points().size(); ++p) orders.push_back(structure_.order(p));
     const auto& points = structure_.points();
     for (std::size_t p = 0; p < points.size();) {
+      if (points[p].is_stage) {  // run by the actions that name it
+        ++p;
+        continue;
+      }
       if (points[p].cycle == detail::model_structure::npos) {
-        run_point(p, orders[p], state);
+        run_point(p, orders, state);
         ++p;
         continue;
       }
       const auto& c = structure_.cycles()[points[p].cycle];
       while (predicates_[points[p].cycle](state))
-        for (std::size_t q = c.first_point; q <= c.last_point; ++q) run_point(q, orders[q], state);
+        for (std::size_t q = c.first_point; q <= c.last_point; ++q) run_point(q, orders, state);
       p = c.last_point + 1;
     }
   }
 
  private:
-  void run_point(std::size_t p, const std::vector<std::size_t>& order, State& state) const {
+  void run_point(std::size_t p, const std::vector<std::vector<std::size_t>>& orders, State& state) const {
     if (p >= functions_.size()) return;
     const auto& point = structure_.points()[p];
-    for (std::size_t a : order) {
+    for (std::size_t a : orders[p]) {
       if (observer_) observer_(point.name, point.actions[a].name, state);
-      functions_[p][a](state);
+      const std::size_t stage = point.actions[a].stage;
+      if (stage == detail::model_structure::npos)
+        functions_[p][a](state);
+      else if (!conditions_[p][a] || conditions_[p][a](state))
+        run_point(stage, orders, state);
     }
   }
 
   detail::model_structure structure_;
   std::vector<predicate> predicates_;
   std::vector<std::vector<action_function>> functions_;
+  std::vector<std::vector<predicate>> conditions_;  // of the actions that run a stage
   observer observer_;
 };
 

@@ -207,3 +207,43 @@ TEST_CASE("replace swaps an action's function and keeps its name, place and depe
   CHECK(s.log == std::vector<std::string>{"continuity0", "cooling0", "forces0"});
   CHECK_THROWS_AS(m.replace("advance", "no_such_action", logger("x")), control_error);
 }
+
+TEST_CASE("a stage declared once runs wherever an action runs it, a task placed in it with it") {
+  control_model<state> m;
+  m.point("initialize").cycle("main", {"advance"}, [](const state& s) { return s.step < 2; }).point("finalize");
+  m.stage("evaluate");
+  auto density = m.action("evaluate", "density", logger("density"));
+  auto forces = m.action("evaluate", "forces", logger("forces"));
+  m.depends(forces, density);
+  auto start = m.action("initialize", "start", logger("start"));
+  auto at_start = m.run_stage("initialize", "evaluate");
+  m.depends(at_start, start);
+  auto drift = m.action("advance", "drift", logger("drift"));
+  auto in_step = m.run_stage("advance", "evaluate");
+  auto clock = m.action("advance", "clock", [](state& s) { ++s.step; });
+  m.depends(in_step, drift).depends(clock, in_step);
+  m.action("evaluate", "cooling", logger("cooling")).after("forces");  // placed once
+  m.action("finalize", "end", logger("end"));
+  state s;
+  m.run(s);
+  CHECK(s.log == std::vector<std::string>{"start0", "density0", "forces0", "cooling0", "drift0", "density0", "forces0",
+                                          "cooling0", "drift1", "density1", "forces1", "cooling1", "end2"});
+  std::ostringstream dot;
+  m.write_graphviz(dot, "test");
+  CHECK(dot.str().find("label=\"stage: evaluate\"") != std::string::npos);
+  CHECK(dot.str().find("label=\"runs\"") != std::string::npos);
+}
+
+TEST_CASE("a stage runs only when its condition holds; stages are run by points, not by stages") {
+  control_model<state> m;
+  m.point("initialize").point("finalize");
+  m.stage("evaluate").stage("inner");
+  m.action("evaluate", "forces", logger("forces"));
+  m.run_stage("initialize", "evaluate", [](const state& s) { return s.step > 0; });
+  m.action("finalize", "end", logger("end"));
+  state s;
+  m.run(s);
+  CHECK(s.log == std::vector<std::string>{"end0"});
+  CHECK_THROWS_WITH(m.run_stage("evaluate", "inner"), Catch::Contains("stages run from control points only"));
+  CHECK_THROWS_WITH(m.run_stage("finalize", "initialize"), Catch::Contains("not a stage"));
+}
