@@ -310,9 +310,14 @@ int run(const app::run_context& context) {
                                                                              : state.particles->global_size();
            })
     .after("particles");
-  m.action("initialize", "polytrope", keep_on_polytrope).after("gravity");
-  m.action("initialize", "relaxation", relaxation_forces).after("forces");
-  m.action("advance", "relaxation", relaxation_forces).after("forces");
+  // At t = 0 the polytrope's u joins the force evaluation before the pressure; in every step it
+  // follows the kick (below).
+  m.action("force_evaluation", "polytrope",
+           [](bns_run& state) {
+             if (state.initializing) keep_on_polytrope(state);
+           })
+    .after("gravity");
+  m.action("force_evaluation", "relaxation", relaxation_forces).after("forces");
   m.action("advance", "polytrope", keep_on_polytrope).after("kick");
   m.action("analyze", "relaxation_check",
            [](bns_run& state) {

@@ -125,25 +125,15 @@ flecsi_lite::control::control_model<State> make_fluid_control_model(sph::app_pro
   using f = sph::fields<D>;
   using ff = fluid_fields<D>;
   auto m = sph::make_app_control_model<State>(std::move(problem));
-  // A restart restored the state of its step (sph/restart.hh): nothing is recomputed.
-  m.replace("initialize", "density", [](State& s) {
-    if (!s.restarted) update_fluid_density<D>(s);
-  });
-  m.replace("initialize", "equation_of_state", [](State& s) {
-    if (!s.restarted) update_fluid_pressure<D>(s);
-  });
-  m.replace("initialize", "forces", [](State& s) {
-    if (!s.restarted) update_fluid_rates<D>(s);
-  });
+  m.replace("force_evaluation", "density", [](State& s) { update_fluid_density<D>(s); });
+  m.replace("force_evaluation", "equation_of_state", [](State& s) { update_fluid_pressure<D>(s); });
+  m.replace("force_evaluation", "forces", [](State& s) { update_fluid_rates<D>(s); });
   m.replace("advance", "kick_drift", [](State& s) {
     auto& p = *s.particles;
     flecsi_lite::execute<fluid_kick_drift<D>>(
       s.dt, p.space(), f::kind(p), f::position()(p), f::velocity(p), f::velocity_half(p), f::density(p),
       ff::density_half(p), f::acceleration(p), ff::density_rate(p), ff::wall_velocity(p), f::drift(p));
   });
-  m.replace("advance", "density", [](State& s) { update_fluid_density<D>(s); });
-  m.replace("advance", "equation_of_state", [](State& s) { update_fluid_pressure<D>(s); });
-  m.replace("advance", "forces", [](State& s) { update_fluid_rates<D>(s); });
   m.replace("advance", "kick", [](State& s) {
     auto& p = *s.particles;
     flecsi_lite::execute<fluid_kick<D>>(s.dt, s.fluid.density == density_method::continuity, f::kind(p),

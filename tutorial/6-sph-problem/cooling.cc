@@ -99,10 +99,9 @@ int run(const app::run_context& context) {
                                                 r.tree_settings.periodic.fill(true);
                                               },
                                               create_lattice});
-  // One line each: the cooling rate joins du/dt right after the forces, before the kick uses it,
-  // at the start (initialize) and in every step (advance).
-  m.action("initialize", "cooling", cooling_action).after("forces");
-  m.action("advance", "cooling", cooling_action).after("forces");
+  // One line: the cooling rate joins du/dt right after the forces, before the kick uses it, in
+  // the force evaluation, which runs at the start (initialize) and in every step (advance).
+  m.action("force_evaluation", "cooling", cooling_action).after("forces");
   return context.execute(m, s, check);
 }
 }  // namespace

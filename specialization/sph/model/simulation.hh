@@ -86,8 +86,11 @@ struct simulation {
   bool finished = false;  ///< the last step reached end_time (or max_steps)
   /// Restored from a checkpoint: the state of the current step is complete (forces included).
   bool restarted = false;
-  /// Distribute the particles at the next search (after a checkpoint: see restart.hh).
+  /// Distribute the particles at the next search (the first search of a run does).
   bool redistribute_next = false;
+  /// True in "initialize" (the force evaluation at t = 0), false from its diagnostics on: what an
+  /// action of the force_evaluation stage that belongs to t = 0 only tests.
+  bool initializing = true;
 
   conserved_totals<D> initial_totals, totals;  ///< at the start, and at the last diagnostics
   long totals_step = -1;                       ///< step of `totals`

@@ -389,7 +389,8 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
     else
       problem.create_particles(s);
   });
-  m.action("initialize", "describe_particles", [](State& s) { detail::describe_particles<D>(s); }).after("search");
+  m.action("initialize", "describe_particles", [](State& s) { detail::describe_particles<D>(s); })
+    .after("force_evaluation");
   m.action("initialize", "open_output", [](State& s) { detail::open_output<D>(static_cast<base&>(s)); });
   m.action("initialize", "open_statistics", [](State& s) { detail::open_statistics<D>(s); }).after("diagnostics");
   m.action("analyze", "statistics", [](State& s) { detail::statistics_row<D>(s); }).after("conserved_quantities");

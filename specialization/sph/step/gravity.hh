@@ -114,18 +114,13 @@ gravity_record update_gravity(simulation<D>& s) {
   return record;
 }
 
-/// Places the action "gravity" in the SPH step right after "density" (h and rho final), so before
-/// "equation_of_state" and "forces" (which adds its acceleration), in initialize (unless the run restarted: the
-/// checkpoint holds the step's forces and potential) and in every advance. With gravity off the
-/// action returns at once.
+/// Places the action "gravity" in the force evaluation right after "density" (h and rho final), so
+/// before "equation_of_state" and "forces" (which adds its acceleration): at t = 0 (not after a
+/// restart, whose checkpoint holds the step's forces and potential) and in every step. With
+/// gravity off the action returns at once.
 template<class State>
 void place_gravity(flecsi_lite::control::control_model<State>& m) {
-  m.action("initialize", "gravity",
-           [](State& s) {
-             if (!s.restarted) s.last_gravity = update_gravity(s);
-           })
-    .after("density");
-  m.action("advance", "gravity", [](State& s) { s.last_gravity = update_gravity(s); }).after("density");
+  m.action("force_evaluation", "gravity", [](State& s) { s.last_gravity = update_gravity(s); }).after("density");
 }
 
 }  // namespace flecsph::sph

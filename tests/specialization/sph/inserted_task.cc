@@ -1,8 +1,10 @@
-// An app's task placed inside the SPH step by name, on 1, 2 and 4 ranks: a uniform external
-// acceleration g added right after "forces" (so before "kick", and before the clock moves) in
-// initialize and in every advance. On every rank and every step it runs after exactly the
-// physics actions that precede it, at the step's start time, and the total momentum then grows
-// by exactly M g t (both half kicks see g; SPH forces conserve momentum to round-off).
+// An app's task placed ONCE inside the SPH step by name, on 1, 2 and 4 ranks: a uniform external
+// acceleration g added right after "forces" of the force_evaluation stage (so before "kick", and
+// before the clock moves). It runs in the first force evaluation (initialize, t = 0) and in every
+// later one (each advance), after exactly the physics actions that precede it, at the step's
+// start time, and the total momentum then grows by exactly M g t (both half kicks of every step
+// see g, the first one only if the evaluation at t = 0 had it; SPH forces conserve momentum to
+// round-off).
 #include "sph_setup.hh"
 
 #include <catch2/catch.hpp>
@@ -32,15 +34,17 @@ struct pushed_run : sph::simulation<D> {
   sph::vector<D> g{0.3, -0.2};
 };
 
-/// What the test watches: the actions of each control point as they ran (one list per visit of
-/// the point), and every run of the task in advance.
+/// What the test watches: the actions of each visit of initialize and advance as they ran, those
+/// of the stage they ran prefixed "force_evaluation/", and every run of the task.
 struct recorder {
   std::vector<std::vector<std::string>> initialize_runs, advance_runs;
-  std::vector<double> advance_start_times;  ///< s.time when each advance began
+  std::vector<std::vector<std::string>>* current = nullptr;  ///< the point being visited
+  std::vector<double> advance_start_times;                   ///< s.time when each advance began
   struct visit {
+    bool initializing;
     long step;
     double time;
-    std::size_t actions_before;  ///< actions of this advance that ran before the task
+    std::size_t actions_before;  ///< actions of this visit that ran before the task
   };
   std::vector<visit> task_visits;
 };
@@ -54,21 +58,24 @@ void push(pushed_run& s) {
 flecsi_lite::control::control_model<pushed_run> pushed_model(recorder& seen) {
   auto m = sph::make_control_model<pushed_run>();
   m.action("initial_data", "lattice", [](pushed_run& s) { load_lattice(s, s.shape); });
-  m.action("initialize", "external_force", push).after("forces");
-  m.action("advance", "external_force",
+  // The one placement: the stage runs in initialize and in every advance.
+  m.action("force_evaluation", "external_force",
            [&seen](pushed_run& s) {
              push(s);
-             seen.task_visits.push_back({s.step, s.time, seen.advance_runs.back().size() - 1});
+             seen.task_visits.push_back({s.initializing, s.step, s.time, seen.current->back().size() - 1});
            })
     .after("forces");
   m.observe([&seen](const std::string& point, const std::string& action, const pushed_run& s) {
-    if (point != "initialize" && point != "advance") return;
-    auto& runs = point == "initialize" ? seen.initialize_runs : seen.advance_runs;
-    if (runs.empty() || action == (point == "advance" ? "kick_drift" : "search")) {
-      runs.emplace_back();
-      if (point == "advance") seen.advance_start_times.push_back(s.time);
+    if (point == "initialize" || point == "advance") {
+      seen.current = point == "initialize" ? &seen.initialize_runs : &seen.advance_runs;
+      if (action == (point == "advance" ? "kick_drift" : "start")) {
+        seen.current->emplace_back();
+        if (point == "advance") seen.advance_start_times.push_back(s.time);
+      }
+      seen.current->back().push_back(action);
+    } else if (point == "force_evaluation") {
+      seen.current->back().push_back(point + "/" + action);
     }
-    runs.back().push_back(action);
   });
   return m;
 }
@@ -87,20 +94,31 @@ TEST_CASE("a task placed after forces runs there on every rank, every step", "[s
   m.run(s);
   REQUIRE(s.step == 12);
 
-  const std::vector<std::string> initialize{"search",         "density",         "equation_of_state", "forces",
-                                            "external_force", "first_time_step", "diagnostics"};
+  const std::vector<std::string> evaluation{"force_evaluation",         "force_evaluation/search",
+                                            "force_evaluation/density", "force_evaluation/equation_of_state",
+                                            "force_evaluation/forces",  "force_evaluation/external_force"};
+  std::vector<std::string> initialize{"start"};
+  initialize.insert(initialize.end(), evaluation.begin(), evaluation.end());
+  initialize.insert(initialize.end(), {"first_time_step", "diagnostics"});
   REQUIRE(seen.initialize_runs.size() == 1);
   CHECK(seen.initialize_runs[0] == initialize);
-  const std::vector<std::string> advance{"kick_drift", "search",         "density", "equation_of_state",
-                                         "forces",     "external_force", "kick",    "clock"};
+  std::vector<std::string> advance{"kick_drift"};
+  advance.insert(advance.end(), evaluation.begin(), evaluation.end());
+  advance.insert(advance.end(), {"kick", "clock"});
   REQUIRE(seen.advance_runs.size() == 12);
   for (const auto& run : seen.advance_runs) CHECK(run == advance);
-  // Once per step, before the clock moved: at the step's own number and start time.
-  REQUIRE(seen.task_visits.size() == 12);
-  for (std::size_t k = 0; k < seen.task_visits.size(); ++k) {
-    CHECK(seen.task_visits[k].step == static_cast<long>(k));
-    CHECK(seen.task_visits[k].time == seen.advance_start_times[k]);
-    CHECK(seen.task_visits[k].actions_before == 5);  // kick_drift, search, density, EOS, forces
+  // In the first force evaluation (initialize, t = 0), then once per step before the clock moved,
+  // at the step's own number and start time.
+  REQUIRE(seen.task_visits.size() == 13);
+  CHECK(seen.task_visits[0].initializing);
+  CHECK(seen.task_visits[0].step == 0);
+  CHECK(seen.task_visits[0].time == 0.0);
+  CHECK(seen.task_visits[0].actions_before == 6);  // start, the stage, search, density, EOS, forces
+  for (std::size_t k = 1; k < seen.task_visits.size(); ++k) {
+    CHECK(!seen.task_visits[k].initializing);
+    CHECK(seen.task_visits[k].step == static_cast<long>(k - 1));
+    CHECK(seen.task_visits[k].time == seen.advance_start_times[k - 1]);
+    CHECK(seen.task_visits[k].actions_before == 6);  // kick_drift, the stage, search, density, EOS, forces
   }
   CHECK(seen.advance_start_times.back() < s.time);
 
@@ -113,6 +131,20 @@ TEST_CASE("a task placed after forces runs there on every rank, every step", "[s
   }
 }
 
+TEST_CASE("a restart skips the whole force evaluation at t = 0, the placed task with it", "[sph][control]") {
+  recorder seen;
+  auto m = pushed_model(seen);
+  pushed_run s;
+  s.restarted = true;  // what read_restart_checkpoint sets: the state of its step is complete
+  s.run.end_time = 0;  // no step
+  m.run(s);
+  REQUIRE(seen.initialize_runs.size() == 1);
+  CHECK(seen.initialize_runs[0] ==
+        std::vector<std::string>{"start", "force_evaluation", "first_time_step", "diagnostics"});
+  CHECK(seen.task_visits.empty());
+  CHECK(!s.initializing);
+}
+
 TEST_CASE("the control model's Graphviz output shows the placed task", "[sph][control]") {
   recorder seen;
   const auto m = pushed_model(seen);
@@ -123,6 +155,6 @@ TEST_CASE("the control model's Graphviz output shows the placed task", "[sph][co
   for (std::size_t at = text.find("placed after forces"); at != std::string::npos;
        at = text.find("placed after forces", at + 1))
     ++placed;
-  CHECK(placed == 2);  // in initialize and in advance
+  CHECK(placed == 1);  // once, in the stage that initialize and advance run
   CHECK(text.find("label=\"external_force\", style=\"rounded,filled\"") != std::string::npos);
 }
