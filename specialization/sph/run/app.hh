@@ -17,7 +17,7 @@
 #include "specialization/sph/files/snapshot_output.hh"
 #include "specialization/sph/files/snapshot_settings.hh"
 #include "specialization/sph/files/swift_initial_data.hh"
-#include "specialization/sph/run/instances.hh"
+#include "specialization/sph/instances.hh"
 #include "specialization/sph/run/restart.hh"
 #include "specialization/sph/run/statistics.hh"
 #include "specialization/sph/step/driver.hh"

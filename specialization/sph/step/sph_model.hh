@@ -19,8 +19,8 @@
 //   m.action("advance", "potential", push).before("kick");           // in every step only
 #pragma once
 
+#include "specialization/sph/instances.hh"
 #include "specialization/sph/model/simulation.hh"
-#include "specialization/sph/run/instances.hh"
 #include "specialization/sph/step/diagnostics.hh"
 #include "specialization/sph/step/steps.hh"
 
