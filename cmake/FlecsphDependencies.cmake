@@ -1,18 +1,18 @@
 # Finds MPI, parallel HDF5, Eigen and Kokkos (installed, upstream release, or the offline source
-# that scripts/install-deps.sh unpacks; see ../shared/KOKKOS.md in the team docs).
+# that scripts/install_deps.sh unpacks; see ../shared/KOKKOS.md in the team docs).
 find_package(MPI REQUIRED COMPONENTS C CXX)
 
 set(HDF5_PREFER_PARALLEL ON)
 find_package(HDF5 REQUIRED COMPONENTS C)
 if(NOT HDF5_IS_PARALLEL)
   message(FATAL_ERROR "HDF5 at ${HDF5_INCLUDE_DIRS} is serial; FleCSPH-lite needs parallel HDF5 "
-                      "(Debian: libhdf5-openmpi-dev; run scripts/install-deps.sh)")
+                      "(Debian: libhdf5-openmpi-dev; run scripts/install_deps.sh)")
 endif()
 
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 
 # An installed Kokkos first (Kokkos_ROOT or CMAKE_PREFIX_PATH); else the offline Kokkos 3.4.01
-# source that scripts/install-deps.sh puts in .deps/; else CMake downloads the upstream release.
+# source that scripts/install_deps.sh puts in .deps/; else CMake downloads the upstream release.
 # (FetchContent skips find_package whenever a source dir is given, hence the explicit search.)
 find_package(Kokkos 3.4 CONFIG QUIET)
 if(NOT Kokkos_FOUND)

@@ -6,7 +6,7 @@
 set -euo pipefail
 build=${1:-build}; steps=${2:-20}; side=${3:-50}
 here=$(cd "$(dirname "$0")" && pwd); root=$(dirname "$here")
-source "$here/mpirun-flags.sh"
+source "$here/mpirun_flags.sh"
 out=$(mktemp -d); declare -A seconds
 for ranks in 1 2; do
   start=$(date +%s.%N)

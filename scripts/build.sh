@@ -3,16 +3,16 @@
 # Extra arguments go to CMake's configure step, e.g. -DCMAKE_BUILD_TYPE=Debug.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-bash "$here/scripts/install-deps.sh"
+bash "$here/scripts/install_deps.sh"
 build="${FLECSPH_BUILD_DIR:-$here/build}"
 mkdir -p "$build"
-# With the clients (scripts/run-tests.sh): the snapshot readers are installed while the code
+# With the clients (scripts/run_tests.sh): the snapshot readers are installed while the code
 # builds (their download takes minutes), the snapshot client tests run on their venv and fail
 # (instead of being skipped) when a reader is missing there.
 clients=() installer=""
 if [ "${FLECSPH_INSTALL_CLIENTS:-0}" = 1 ]; then
   clients=(-DFLECSPH_SNAPSHOT_PYTHON="$here/.deps/snapshot-clients/bin/python" -DFLECSPH_REQUIRE_SNAPSHOT_CLIENTS=ON)
-  bash "$here/scripts/install-snapshot-clients.sh" >"$build/snapshot-clients.log" 2>&1 &
+  bash "$here/scripts/install_snapshot_clients.sh" >"$build/snapshot-clients.log" 2>&1 &
   installer=$!
 fi
 cmake -S "$here" -B "$build" -G Ninja "${clients[@]}" "$@" >"$build/configure.log" 2>&1 || {

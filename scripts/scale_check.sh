@@ -7,7 +7,7 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-$here/build}; shift || true
 ranks=("$@"); [ ${#ranks[@]} -gt 0 ] || ranks=(1 2 4 8 16)
-source "$here/scripts/mpirun-flags.sh"
+source "$here/scripts/mpirun_flags.sh"
 export OMP_NUM_THREADS=1 OMP_PROC_BIND=false
 export OMPI_MCA_mpi_yield_when_idle=1  # oversubscribed ranks give the cores up while they wait
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT

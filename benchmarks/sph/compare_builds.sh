@@ -12,7 +12,7 @@
 # compare_builds); LAYOUTS (default "1x1 1x2 2x1"). Other arguments go to bench_sedov.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-source "$here/scripts/mpirun-flags.sh"
+source "$here/scripts/mpirun_flags.sh"
 export OMP_PROC_BIND=false
 builds=(${BUILDS:-default=$here/build})
 rounds=${ROUNDS:-1}

@@ -13,7 +13,7 @@
 # ghosts and the bytes moved do not depend on that.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-source "$here/scripts/mpirun-flags.sh"
+source "$here/scripts/mpirun_flags.sh"
 cores=$(nproc)  # before OMP_NUM_THREADS, which nproc reports instead
 export OMP_PROC_BIND=false OMP_NUM_THREADS=1
 bench=${BUILD:-$here/build}/benchmarks/sph/bench_sedov

@@ -5,7 +5,7 @@
 #   OLD=/path/to/old/bench_sedov SKINS="0 0.05 0.1" benchmarks/sph/compare_list_skin.sh --per-side 50 --steps 5
 set -euo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
-source "$here/scripts/mpirun-flags.sh"
+source "$here/scripts/mpirun_flags.sh"
 NEW=${NEW:-${FLECSPH_BUILD_DIR:-$here/build}/benchmarks/sph/bench_sedov}
 OLD=${OLD:-$NEW}
 SKINS=${SKINS:-"0 0.05 0.1"}

@@ -20,7 +20,7 @@ while [ $# -gt 0 ]; do
     *) echo "compare_time_steps: unknown option $1" >&2; exit 2 ;;
   esac
 done
-source "$here/scripts/mpirun-flags.sh"
+source "$here/scripts/mpirun_flags.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 run() {  # name, then --set options

@@ -11,7 +11,7 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 bench="${FLECSPH_BUILD_DIR:-$here/build}/benchmarks/sph/bench_sedov"
 [ -x "$bench" ] || { echo "run_scaling.sh: $bench not built" >&2; exit 1; }
-source "$here/scripts/mpirun-flags.sh"
+source "$here/scripts/mpirun_flags.sh"
 export OMP_PROC_BIND=false
 
 # The throughput of one run: ranks threads [bench_sedov options]. One rank runs without mpirun,

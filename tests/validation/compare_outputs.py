@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Compares two folders of app outputs bit for bit (scripts/compare-app-outputs.sh compare).
+"""Compares two folders of app outputs bit for bit (scripts/compare_app_outputs.sh compare).
 
 Every file of the first folder must exist in the second and the reverse. HDF5 files: the same
 groups, datasets and attributes, every dataset's bytes and element type equal, every attribute

@@ -3,8 +3,8 @@
 # of another build: the evidence that a change of layout (moves, splits, deduplication) changed no
 # bit of any result.
 #
-#   scripts/compare-app-outputs.sh run BUILD_DIR OUT_DIR        # every case below, at 1 and 2 ranks
-#   scripts/compare-app-outputs.sh compare BASELINE_DIR OUT_DIR  # exit 0 when every file is the same
+#   scripts/compare_app_outputs.sh run BUILD_DIR OUT_DIR        # every case below, at 1 and 2 ranks
+#   scripts/compare_app_outputs.sh compare BASELINE_DIR OUT_DIR  # exit 0 when every file is the same
 #
 # `run` writes OUT_DIR/<case>/np<N>/ (the files a case writes, its stdout and exit status);
 # `compare` compares every file of BASELINE_DIR with the file of the same name in OUT_DIR, and
@@ -25,7 +25,7 @@ mode=$1
 if [ "$mode" = run ]; then
   build=$(cd "$2" && pwd)
   out=$(mkdir -p "$3" && cd "$3" && pwd)
-  source "$root/scripts/mpirun-flags.sh"
+  source "$root/scripts/mpirun_flags.sh"
   # name | program | arguments (parameter files relative to the source tree)
   cases=(
     "sod_1d|sod|$root/apps/sod/sod_1d.par --set particles=200 --set end_time=0.02 --set output_format=both"

@@ -6,7 +6,7 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$here/scripts/build.sh"
 build="${FLECSPH_BUILD_DIR:-$here/build}"
-source "$here/scripts/mpirun-flags.sh"
+source "$here/scripts/mpirun_flags.sh"
 mkdir -p "$here/out"
 cd "$here/out"
 export OMP_PROC_BIND=false OMP_NUM_THREADS=1

@@ -4,11 +4,11 @@
 # source tree for CMake's FetchContent when the upstream release cannot be downloaded.
 # A second run installs nothing and takes a few seconds.
 #
-# FLECSPH_INSTALL_CLIENTS=1 (scripts/run-tests.sh sets it) also installs the viewers that the
+# FLECSPH_INSTALL_CLIENTS=1 (scripts/run_tests.sh sets it) also installs the viewers that the
 # client tests (tests/clients) run on our output: ParaView's pvpython, with Xvfb since Debian's
 # ParaView renders through X even offscreen, and splash (about 150 MB to download and 800 MB on
 # disk, 2 minutes to install), and python3-venv for the snapshot readers that
-# scripts/install-snapshot-clients.sh installs (scripts/build.sh runs it while the code builds).
+# scripts/install_snapshot_clients.sh installs (scripts/build.sh runs it while the code builds).
 # The main job does without them.
 set -euo pipefail
 

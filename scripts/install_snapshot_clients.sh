@@ -2,7 +2,7 @@
 # Installs, idempotently, the snapshot readers the client tests load our snapshots with
 # (tests/clients/check_snapshots.py --client swiftsimio|yt|pynbody): swiftsimio, yt, pynbody and
 # unyt from PyPI at exactly the versions of scripts/snapshot-clients.txt, in a venv of
-# /usr/bin/python3 (Debian's, whose python3-venv scripts/install-deps.sh installs with
+# /usr/bin/python3 (Debian's, whose python3-venv scripts/install_deps.sh installs with
 # FLECSPH_INSTALL_CLIENTS=1) at .deps/snapshot-clients: about 250 MB to download, 900 MB on disk,
 # 3 minutes; a second run checks one file and installs nothing. scripts/build.sh runs it in the
 # background while the code builds.
