@@ -10,6 +10,8 @@
 //   restart   written to every checkpoint and read back (every component required) at a restart;
 //   initial   read from initial data: required, or optional (absent: zero, or for an id field
 //             the entity's index in the step); the RULE checks every value read (also at restart).
+// A field that exists in files ONLY WITH a FEATURE of the run (a name the specialization gives,
+// e.g. "gravity") keeps its roles only in runs that have it (without it: none).
 //
 //   static inline const definition<double> density{
 //     "rho", persist::output().restart().initial_optional(persist::at_least(0, "densities"))};
@@ -98,6 +100,11 @@ class persistence {
   persistence initial_optional(value_rule rule = {}) const {
     return initial(initial_reading::optional, std::move(rule));
   }
+  /// In files only for runs that have `feature` (the specialization names its features, e.g.
+  /// "gravity"); in other runs the field has no role.
+  persistence only_with(std::string feature) const {
+    return with([&feature](persistence& p) { p.feature_ = std::move(feature); });
+  }
   /// Optional initial data that defaults to the entity's index in the step (for ids).
   persistence initial_optional_index() const { return initial(initial_reading::optional_index, {}); }
 
@@ -106,6 +113,8 @@ class persistence {
   bool is_padded() const { return padded_; }
   initial_reading reading() const { return reading_; }
   const value_rule& rule() const { return rule_; }
+  /// The feature the field's roles depend on ("" when none).
+  const std::string& feature() const { return feature_; }
 
   /// The dataset names of a field called `field_name` with `components` components: as given,
   /// or the defaults.
@@ -137,6 +146,7 @@ class persistence {
   role roles_ = role::none;
   initial_reading reading_ = initial_reading::optional;
   value_rule rule_;
+  std::string feature_;
 };
 
 }  // namespace flecsi_lite::data

@@ -7,29 +7,32 @@
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace flecsph::sph {
 
-/// The registered fields that the files of run `s` hold (as their roles say): all but the
-/// self-gravity fields when gravity is off and the individual time steps' fields with global
-/// steps, so that such a run writes and reads what it did before they existed.
+/// Whether run `s` has `feature`, a name a field's definition may give (persist only_with): the
+/// SPH features are "gravity" (gravity = on) and "individual_time_steps" (time_steps = individual).
+template<int D>
+bool has_feature(const simulation<D>& s, const std::string& feature) {
+  if (feature == "gravity") return s.physics.gravity.enabled;
+  if (feature == "individual_time_steps") return s.physics.individual_time_steps();
+  throw std::logic_error("sph: a field is declared only_with(\"" + feature +
+                         "\"), which is no feature of an SPH run (gravity, individual_time_steps)");
+}
+
+/// The registered fields that the files of run `s` hold (as their roles say): a field declared
+/// only with a feature the run lacks (fields.hh) keeps no role, so that such a run writes and
+/// reads what it did before that field existed.
 template<int D>
 std::vector<flecsi_lite::data::registered_field> files_fields(const simulation<D>& s) {
-  // A field's index in the registry is its id: the gravity fields stay, without roles.
+  // A field's index in the registry is its id: every field stays, some without roles.
   auto all = flecsi_lite::data::registered_fields<particle_tree<D>>();
-  using f = fields<D>;
-  const bool gravity = s.physics.gravity.enabled, individual = s.physics.individual_time_steps();
-  for (auto& field : all) {
-    const bool gravity_field =
-      field.name == f::gravitational_potential.name() || field.name == f::zeta_over_omega.name();
-    const bool individual_field = field.name == f::velocity_half.name() ||
-                                  field.name == f::internal_energy_half.name() || field.name == f::time_bin.name() ||
-                                  field.name == f::step_begin.name() || field.name == f::step_end.name() ||
-                                  field.name == f::kicked_ticks.name();
-    if ((gravity_field && !gravity) || (individual_field && !individual))
+  for (auto& field : all)
+    if (!field.persistence.feature().empty() && !has_feature(s, field.persistence.feature()))
       field.persistence = flecsi_lite::data::persistence();
-  }
   return all;
 }
 

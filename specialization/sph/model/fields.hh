@@ -29,7 +29,17 @@ enum class particle_kind : std::int32_t { fluid = 0, wall = 1 };
 
 /// The fields of dimension D, declared once (fields are per topology type, ntree<D>), each with
 /// its persistence (flecsi_lite/data/persistence.hh): what the output, the checkpoints and the
-/// initial-data reader hold is exactly what these definitions say. Output and checkpoints hold
+/// initial-data reader hold is exactly what these definitions say, and a field that exists in
+/// files only with a feature of the run says so (`only_with`: "gravity", "individual_time_steps";
+/// run_features() in files/particle_output.hh says which a run has).
+///
+/// Registration. Each definition registers its field with ntree<D> (data/field_registry.hh; its
+/// index there is its id) when the static member is initialized. A static member of a class
+/// template exists only where a program uses it (implicit instantiation) and is initialized
+/// before main() in no specified order across translation units: so the registry of a program
+/// holds the fields it uses, first use first. A new field needs nothing else to reach memory,
+/// ghost copies, redistribution and the files its roles name; the registry's order decides only
+/// the order in which a file's datasets are created (readers find them by name). Output and checkpoints hold
 /// x y z, vx vy vz (zeros beyond D), m rho P u h id, kind (int32), cs, du_dt; checkpoints also
 /// what the next step reads besides (accelerations and du/dt of the last force evaluation, grad-h
 /// and pressure terms, the Balsara inputs, the walls' accumulators), so that a restart continues
@@ -77,25 +87,31 @@ struct fields {
   static inline const definition<vector<D>> boundary_impulse{
     "boundary_impulse", persist::as("impulse_x", "impulse_y", "impulse_z").restart()};
   static inline const definition<double> boundary_work{"boundary_work", persist::restart()};
-  // Self-gravity only (gravity = on; with it off no file holds them and no memory is taken,
-  // files_fields() in particle_output.hh): the potential G Phi (output and restart, for the
+  // Self-gravity only (gravity = on; with it off no file holds them, only_with("gravity"), and
+  // no memory is taken): the potential G Phi (output and restart, for the
   // potential energy), zeta / Omega of the grad-h gravity term (Price & Monaghan 2007), and the
   // tree's acceleration G a (in memory only: the force pass adds it).
-  static inline const definition<double> gravitational_potential{"phi", persist::output().restart()};
-  static inline const definition<double> zeta_over_omega{"zeta_over_omega", persist::restart()};
+  static inline const definition<double> gravitational_potential{"phi",
+                                                                 persist::output().restart().only_with("gravity")};
+  static inline const definition<double> zeta_over_omega{"zeta_over_omega", persist::restart().only_with("gravity")};
   static inline const definition<vector<D>> gravity_acceleration{"gravity_acceleration"};
   // The half-step values of the leapfrog: recomputed in every step with global time steps; with
   // individual ones a particle keeps them over its step (restart only, time_steps = individual).
-  static inline const definition<vector<D>> velocity_half{"velocity_half",
-                                                          persist::as("vx_half", "vy_half", "vz_half").restart()};
-  static inline const definition<double> internal_energy_half{"u_half", persist::restart()};
+  static inline const definition<vector<D>> velocity_half{
+    "velocity_half", persist::as("vx_half", "vy_half", "vz_half").restart().only_with("individual_time_steps")};
+  static inline const definition<double> internal_energy_half{"u_half",
+                                                              persist::restart().only_with("individual_time_steps")};
   // Individual time steps only (time_bins.hh; in the files with time_steps = individual): the
   // particle's bin (its step is 2^bin ticks of the timeline), where its step began and ends
   // (ticks; a woken particle's end comes early), and the length its first kick took.
-  static inline const definition<std::int32_t> time_bin{"time_bin", persist::output().restart()};
-  static inline const definition<std::int64_t> step_begin{"step_begin", persist::restart()};
-  static inline const definition<std::int64_t> step_end{"step_end", persist::restart()};
-  static inline const definition<std::int64_t> kicked_ticks{"kicked_ticks", persist::restart()};
+  static inline const definition<std::int32_t> time_bin{"time_bin",
+                                                        persist::output().restart().only_with("individual_time_steps")};
+  static inline const definition<std::int64_t> step_begin{"step_begin",
+                                                          persist::restart().only_with("individual_time_steps")};
+  static inline const definition<std::int64_t> step_end{"step_end",
+                                                        persist::restart().only_with("individual_time_steps")};
+  static inline const definition<std::int64_t> kicked_ticks{"kicked_ticks",
+                                                            persist::restart().only_with("individual_time_steps")};
   /// In memory only: each active particle's own criterion of the last force pass, and the
   /// smallest bin among its neighbours (the limiter's input).
   static inline const definition<double> own_time_step{"own_time_step"};
