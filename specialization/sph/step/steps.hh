@@ -9,6 +9,7 @@
 #include "specialization/sph/step/equation_of_state.hh"
 #include "specialization/sph/step/forces.hh"
 #include "specialization/sph/step/integrator.hh"
+#include "specialization/sph/step/interior_then_boundary.hh"
 #include "specialization/sph/step/list_reuse.hh"
 #include "specialization/sph/step/redistribution.hh"
 #include "specialization/sph/step/time_bins.hh"
@@ -148,24 +149,19 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
 /// Density and smoothing length; when some h outgrew the searched reach, searches again with the
 /// grown h and repeats (the same decision on every rank, so results stay rank-count independent).
 /// The search again redistributes only when the ghosts no longer suffice for the grown h.
-/// Each pair task is launched twice with the same fields: over the interior targets with owned
-/// privileges only (it need not wait for the ghost copies, so it runs while they travel), then over
-/// the boundary targets with ghosts, combining the interior part's value into its reduction.
-/// Every particle's sums are the same as in one launch, so the results are too, bit for bit.
+/// Each pair task is launched over the interior targets, then the boundary ones
+/// (interior_then_boundary.hh): the results are those of one launch, bit for bit.
 template<int D>
 void update_density(simulation<D>& s) {
   using f = fields<D>;
+  using flecsi_lite::na, flecsi_lite::ro, flecsi_lite::reduction::max;
   auto& p = *s.particles;
   const auto launch = [&](auto... field) {
-    if (s.physics.gravity.enabled) {
-      auto interior = flecsi_lite::execute<compute_density_with_gravity<D, flecsi_lite::na>>(
-        s.neighbours, s.physics, 0.0, field..., f::zeta_over_omega(p));
-      return flecsi_lite::reduce<compute_density_with_gravity<D, flecsi_lite::ro>, flecsi_lite::reduction::max>(
-        s.neighbours, s.physics, interior, field..., f::zeta_over_omega(p));
-    }
-    auto interior = flecsi_lite::execute<compute_density<D, flecsi_lite::na>>(s.neighbours, s.physics, 0.0, field...);
-    return flecsi_lite::reduce<compute_density<D, flecsi_lite::ro>, flecsi_lite::reduction::max>(
-      s.neighbours, s.physics, interior, field...);
+    if (s.physics.gravity.enabled)
+      return reduce_interior_then_boundary<compute_density_with_gravity<D, na>, compute_density_with_gravity<D, ro>,
+                                           max>(s.neighbours, s.physics, 0.0, field..., f::zeta_over_omega(p));
+    return reduce_interior_then_boundary<compute_density<D, na>, compute_density<D, ro>, max>(s.neighbours, s.physics,
+                                                                                              0.0, field...);
   };
   for (int attempt = 0;; ++attempt) {
     const double worst = std::apply(launch, std::make_tuple(f::position()(p), f::mass()(p), f::kind(p),
@@ -196,9 +192,10 @@ void update_pressure(simulation<D>& s) {
   auto& p = *s.particles;
   if (s.physics.balsara || s.physics.individual_time_steps())
     std::apply(
-      [&](auto... field) {
-        flecsi_lite::execute<compute_velocity_gradients<D, flecsi_lite::na>>(s.neighbours, s.physics, field...);
-        flecsi_lite::execute<compute_velocity_gradients<D, flecsi_lite::ro>>(s.neighbours, s.physics, field...);
+      [&](auto&&... field) {
+        execute_interior_then_boundary<compute_velocity_gradients<D, flecsi_lite::na>,
+                                       compute_velocity_gradients<D, flecsi_lite::ro>>(s.neighbours, s.physics,
+                                                                                       field...);
       },
       std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
                       f::omega(p), f::velocity_divergence(p), f::velocity_curl(p)));
@@ -220,22 +217,20 @@ void update_forces(simulation<D>& s) {
   const auto fields_written =
     std::make_tuple(f::kind(p), f::acceleration(p), f::internal_energy_rate(p), f::own_time_step(p));
   const double none = std::numeric_limits<double>::max();
+  using flecsi_lite::na, flecsi_lite::ro, flecsi_lite::reduction::min;
   if (s.physics.gravity.enabled) {
     s.next_time_step = std::apply(
       [&](auto... field) {
-        auto interior = flecsi_lite::execute<compute_forces_with_gravity<D, flecsi_lite::na>>(s.neighbours, s.physics,
-                                                                                              none, field...);
-        return flecsi_lite::reduce<compute_forces_with_gravity<D, flecsi_lite::ro>, flecsi_lite::reduction::min>(
-          s.neighbours, s.physics, interior, field...);
+        return reduce_interior_then_boundary<compute_forces_with_gravity<D, na>, compute_forces_with_gravity<D, ro>,
+                                             min>(s.neighbours, s.physics, none, field...);
       },
       std::tuple_cat(fields_read, std::make_tuple(f::zeta_over_omega(p), f::gravity_acceleration(p)), fields_written));
     return;
   }
   s.next_time_step = std::apply(
     [&](auto... field) {
-      auto interior = flecsi_lite::execute<compute_forces<D, flecsi_lite::na>>(s.neighbours, s.physics, none, field...);
-      return flecsi_lite::reduce<compute_forces<D, flecsi_lite::ro>, flecsi_lite::reduction::min>(
-        s.neighbours, s.physics, interior, field...);
+      return reduce_interior_then_boundary<compute_forces<D, na>, compute_forces<D, ro>, min>(s.neighbours, s.physics,
+                                                                                              none, field...);
     },
     std::tuple_cat(fields_read, fields_written));
 }
