@@ -25,6 +25,8 @@ STAMP = re.compile(r"git |\(git|version|wall[- _]?(clock|time)|seconds|elapsed|\
 # The lines of an app's standard output that state results ("sod: L1 errors ...", "conserved:
 # ..."), not the executor's timing summary ("sph: ... particle-steps/s") or the progress lines.
 RESULT_LINE = re.compile(r"^(?!sph:)[a-z_]+: ")
+# Attributes that hold nothing but such a stamp (SWIFT's "Git Revision" of the Code group).
+STAMP_ATTRIBUTE = re.compile(r"git|version", re.IGNORECASE)
 HDF5_SUFFIXES = (".h5part", ".hdf5", ".h5", ".partial")
 
 
@@ -43,6 +45,8 @@ def compare_attributes(name, a, b, problems):
     for key in sorted(keys_a ^ keys_b):
         problems.append(f"{name}: attribute '{key}' in only one file")
     for key in sorted(keys_a & keys_b):
+        if STAMP_ATTRIBUTE.search(key):
+            continue
         x, y = a.attrs[key], b.attrs[key]
         if isinstance(x, numpy.ndarray) or isinstance(y, numpy.ndarray):
             x, y = numpy.asarray(x), numpy.asarray(y)
