@@ -8,6 +8,7 @@
 #include "flecsi_lite/io/detail/hdf5_errors.hh"
 #include "flecsi_lite/io/detail/hdf5_parallel.hh"
 #include "flecsi_lite/io/detail/hdf5_storage.hh"
+#include "flecsi_lite/io/detail/rank_slice.hh"
 #include "flecsi_lite/io/io_error.hh"
 #include "flecsi_lite/util/edit_distance.hh"
 
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <optional>
+#include <utility>
 #include <variant>
 
 namespace flecsi_lite::io {
@@ -234,16 +236,10 @@ void gadget_reader::read_column(const std::string& name, slice part, element_typ
       throw slice_error(what + " has " + std::to_string(count_) + " particles; rank " + std::to_string(rank_of(comm_)) +
                         " asked for [" + std::to_string(part.offset) + ", " + std::to_string(part.offset + part.count) +
                         ")");
-    file_space = dataspace_handle(H5Dget_space(dataset.get()));
-    const int rank = H5Sget_simple_extent_ndims(file_space.get());
-    const hsize_t offset[2] = {part.offset, static_cast<hsize_t>(column_of(name).component)};
-    const hsize_t count[2] = {part.count, 1};
-    memory_space = dataspace_handle(H5Screate_simple(1, count, nullptr));
-    const herr_t selected = part.count > 0
-                              ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr)
-                              : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
-    if (!file_space || !memory_space || rank < 1 || selected < 0)
-      throw io_error(failure::system, "cannot select this rank's part of " + what + hdf5_reason());
+    auto slice = select_rank_slice(dataset.get(), part.offset, part.count,
+                                   static_cast<hsize_t>(column_of(name).component), 1, 1, what);
+    file_space = std::move(slice.file_space);
+    memory_space = std::move(slice.memory_space);
   });
   // Collective: every rank takes part, those that read nothing with an empty selection.
   auto transfer = collective_transfer();

@@ -9,10 +9,12 @@
 #include "flecsi_lite/io/detail/hdf5_errors.hh"
 #include "flecsi_lite/io/detail/hdf5_parallel.hh"
 #include "flecsi_lite/io/detail/hdf5_storage.hh"
+#include "flecsi_lite/io/detail/rank_slice.hh"
 #include "flecsi_lite/util/edit_distance.hh"
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 namespace flecsi_lite::io {
 
@@ -262,15 +264,9 @@ void h5part_reader::read_into(std::int64_t step, const std::string& name, slice 
       throw slice_error(describe_dataset(step, name) + " has " + std::to_string(length) + " particles; rank " +
                         std::to_string(rank_of(comm_)) + " asked for [" + std::to_string(part.offset) + ", " +
                         std::to_string(part.offset + part.count) + ")");
-    const hsize_t offset = part.offset, count = part.count;
-    file_space = dataspace_handle(H5Dget_space(dataset.get()));
-    memory_space = dataspace_handle(H5Screate_simple(1, &count, nullptr));
-    const herr_t selected = count > 0
-                              ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr)
-                              : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
-    if (!file_space || !memory_space || selected < 0)
-      throw io_error(failure::system,
-                     "cannot select this rank's part of " + describe_dataset(step, name) + hdf5_reason());
+    auto slice = select_rank_slice(dataset.get(), part.offset, part.count, 0, 1, 1, describe_dataset(step, name));
+    file_space = std::move(slice.file_space);
+    memory_space = std::move(slice.memory_space);
   });
   // Collective: every rank takes part, those that read nothing with an empty selection. A
   // dataset without any element has no storage to read from (the same on every rank).

@@ -8,6 +8,7 @@
 #include "flecsi_lite/io/detail/hdf5_errors.hh"
 #include "flecsi_lite/io/detail/hdf5_parallel.hh"
 #include "flecsi_lite/io/detail/partial_file.hh"
+#include "flecsi_lite/io/detail/rank_slice.hh"
 #include "flecsi_lite/io/output_path.hh"
 #include "flecsi_lite/io/particle_partition.hh"
 #include "flecsi_lite/runtime/log.hh"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 namespace flecsi_lite::io {
 
@@ -239,7 +241,7 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
 
   hdf5_handle dataset, file_space, memory_space;
   agree(comm_, [&] {
-    const hsize_t global = place.global_length, count = place.local.count, offset = place.local.offset;
+    const hsize_t global = place.global_length;
     auto global_space = dataspace_handle(H5Screate_simple(1, &global, nullptr));
     auto creation = property_list_handle(H5Pcreate(H5P_DATASET_CREATE));
     // Every element is written below: no fill value needed. No modification times: identical
@@ -250,13 +252,9 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
     dataset = dataset_handle(H5Dcreate2(step_group_.get(), name.c_str(), file_type(type), global_space.get(),
                                         H5P_DEFAULT, creation.get(), H5P_DEFAULT));
     if (!dataset) throw io_error(failure::system, "cannot create " + where + hdf5_reason());
-    file_space = dataspace_handle(H5Dget_space(dataset.get()));
-    memory_space = dataspace_handle(H5Screate_simple(1, &count, nullptr));
-    const herr_t selected = count > 0
-                              ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &count, nullptr)
-                              : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
-    if (!file_space || !memory_space || selected < 0)
-      throw io_error(failure::system, "cannot select this rank's part of " + where + hdf5_reason());
+    auto slice = select_rank_slice(dataset.get(), place.local.offset, place.local.count, 0, 1, 1, where);
+    file_space = std::move(slice.file_space);
+    memory_space = std::move(slice.memory_space);
   });
 
   // Collective: every rank takes part, those without particles with an empty selection. A

@@ -7,6 +7,7 @@
 #include "flecsi_lite/io/detail/hdf5_errors.hh"
 #include "flecsi_lite/io/detail/hdf5_parallel.hh"
 #include "flecsi_lite/io/detail/partial_file.hh"
+#include "flecsi_lite/io/detail/rank_slice.hh"
 #include "flecsi_lite/io/output_path.hh"
 #include "flecsi_lite/io/particle_partition.hh"
 #include "flecsi_lite/runtime/log.hh"
@@ -15,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <optional>
+#include <utility>
 
 namespace flecsi_lite::io {
 
@@ -195,7 +197,6 @@ void snapshot_writer::write_array(const std::string& group, const std::string& n
   agree(comm_, [&] {
     const int rank = columns == 1 ? 1 : 2;
     const hsize_t global[2] = {place.global_length, hsize_t(columns)};
-    const hsize_t count[2] = {place.local.count, hsize_t(columns)}, offset[2] = {place.local.offset, 0};
     auto group_of = open_group(group);
     auto global_space = dataspace_handle(H5Screate_simple(rank, global, nullptr));
     auto creation = untimed_creation(H5P_DATASET_CREATE);
@@ -206,13 +207,10 @@ void snapshot_writer::write_array(const std::string& group, const std::string& n
                                         creation.get(), H5P_DEFAULT));
     if (!dataset) throw io_error(failure::system, "cannot create " + where + hdf5_reason());
     for (const auto& attribute : attributes) write_snapshot_attribute(dataset.get(), attribute, where);
-    file_space = dataspace_handle(H5Dget_space(dataset.get()));
-    memory_space = dataspace_handle(H5Screate_simple(rank, count, nullptr));
-    const herr_t selected = place.local.count > 0
-                              ? H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, offset, nullptr, count, nullptr)
-                              : std::min(H5Sselect_none(file_space.get()), H5Sselect_none(memory_space.get()));
-    if (!file_space || !memory_space || selected < 0)
-      throw io_error(failure::system, "cannot select this rank's part of " + where + hdf5_reason());
+    auto slice =
+      select_rank_slice(dataset.get(), place.local.offset, place.local.count, 0, hsize_t(columns), rank, where);
+    file_space = std::move(slice.file_space);
+    memory_space = std::move(slice.memory_space);
   });
 
   // Collective: every rank takes part, those without rows with an empty selection.
