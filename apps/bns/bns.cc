@@ -10,7 +10,7 @@
 #include "bns_diagnostics.hh"
 #include "bns_problem.hh"
 
-#include "specialization/sph/run/app.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"

@@ -7,8 +7,8 @@
 
 #include "bns_problem.hh"
 
-#include "specialization/physics/gravitational_waves.hh"
-#include "specialization/sph/step/driver.hh"
+#include "specialization/physics.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/util.hh"

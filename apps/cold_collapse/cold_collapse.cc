@@ -5,7 +5,7 @@
 //   mpirun -np 2 cold_collapse apps/cold_collapse/cold_collapse.par [--check-radius 0.03]
 #include "cold_collapse_problem.hh"
 
-#include "specialization/sph/run/app.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"

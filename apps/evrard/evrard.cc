@@ -5,7 +5,7 @@
 //   mpirun -np 2 evrard apps/evrard/evrard.par [--set particles=50000] [--check-energy 0.01]
 #include "evrard_problem.hh"
 
-#include "specialization/sph/run/app.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
@@ -64,8 +64,7 @@ int run(const app::run_context& context) {
   evrard_run s;
   sph::configure(s, context);
   s.problem = evrard::problem_parameters().read(context.parameters());
-  if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
-    throw runtime::parameter_error("evrard: the Evrard collapse needs eos = ideal_gas");
+  sph::require_equation_of_state(s.physics, flecsph::physics::eos_type::ideal_gas, s.program, "the Evrard collapse");
   if (!s.physics.gravity.enabled) throw runtime::parameter_error("evrard: the Evrard collapse needs gravity = true");
   s.gravitational_constant = s.physics.gravity.constant;
   s.description = {{"sphere_radius", s.problem.radius},

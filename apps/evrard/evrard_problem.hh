@@ -5,7 +5,7 @@
 
 #include "sphere_lattice.hh"
 
-#include "specialization/sph/step/driver.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"

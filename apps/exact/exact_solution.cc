@@ -1,7 +1,6 @@
 // Writes an exact solution as CSV for plots and validation: the Riemann problem (Sod by default;
 // Toro ch. 4) on a line, or the Sedov-Taylor blast (Kamm & Timmes 2007) along a radius.
-#include "specialization/analytic/riemann_exact.hh"
-#include "specialization/analytic/sedov_taylor.hh"
+#include "specialization/analytic.hh"
 
 #include "flecsi_lite/runtime.hh"
 

@@ -8,9 +8,9 @@
 #include "fluid_problem.hh"
 #include "martin_moyce.hh"
 
-#include "specialization/analytic/channel_flow.hh"
-#include "specialization/fluid/fluid_model.hh"
-#include "specialization/sph/run/app.hh"
+#include "specialization/analytic.hh"
+#include "specialization/fluid.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/execution.hh"

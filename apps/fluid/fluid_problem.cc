@@ -1,7 +1,7 @@
 // The keys, layout and particles of the fluid app's problems (fluid_problem.hh).
 #include "fluid_problem.hh"
 
-#include "specialization/physics/kernels.hh"
+#include "specialization/physics.hh"
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,8 @@
 // the parameters and the particles.
 #pragma once
 
-#include "specialization/fluid/fluid_settings.hh"
-#include "specialization/sph/model/settings.hh"
+#include "specialization/fluid.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/runtime.hh"
 

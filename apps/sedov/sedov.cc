@@ -5,7 +5,7 @@
 //   mpirun -np 2 sedov apps/sedov/sedov_3d.par [--set particles_per_side=64] [--check 0.05,1e-3]
 #include "sedov_problem.hh"
 
-#include "specialization/sph/run/app.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
@@ -61,8 +61,8 @@ int run(const app::run_context& context) {
   sedov_run<D> s;
   sph::configure(s, context);
   s.problem = sedov::problem_parameters().read(context.parameters());
-  if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
-    throw runtime::parameter_error("sedov: the similarity solution needs eos = ideal_gas");
+  sph::require_equation_of_state(s.physics, flecsph::physics::eos_type::ideal_gas, s.program,
+                                 "the similarity solution");
   s.description = {{"blast_energy", s.problem.energy}, {"rho0", s.problem.rho0}};
   auto m = sph::make_app_control_model<sedov_run<D>>(
     {[](sedov_run<D>& state) { sedov::set_periodic_box(state, state.problem); },

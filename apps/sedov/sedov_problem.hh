@@ -3,8 +3,8 @@
 // similarity solution (Sedov 1959; Kamm & Timmes 2007): shock radius from the radial density peak.
 #pragma once
 
-#include "specialization/analytic/sedov_taylor.hh"
-#include "specialization/sph/step/driver.hh"
+#include "specialization/analytic.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"

@@ -5,7 +5,7 @@
 //   mpirun -np 2 sod apps/sod/sod_1d.par [--set particles=2000] [--check-l1 0.005,0.005,0.02]
 #include "sod_problem.hh"
 
-#include "specialization/sph/run/app.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
@@ -83,8 +83,7 @@ int run(const app::run_context& context) {
   sod_run<D> s;
   sph::configure(s, context);
   s.problem = sod::problem_parameters().read(context.parameters());
-  if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
-    throw runtime::parameter_error("sod: the exact solution needs eos = ideal_gas");
+  sph::require_equation_of_state(s.physics, flecsph::physics::eos_type::ideal_gas, s.program, "the exact solution");
   s.description = {
     {"rho_left", s.problem.rho_left}, {"p_left", s.problem.p_left},           {"rho_right", s.problem.rho_right},
     {"p_right", s.problem.p_right},   {"x_interface", s.problem.x_interface}, {"x_min", s.problem.x_min},

@@ -3,8 +3,8 @@
 // the L1 errors against the exact Riemann solution (Toro 2009, ch. 4).
 #pragma once
 
-#include "specialization/analytic/riemann_exact.hh"
-#include "specialization/sph/step/driver.hh"
+#include "specialization/analytic.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"

@@ -13,7 +13,9 @@
    topology/ntree/search/detail/ the neighbour search's.
 3. Public face. Every framework header outside detail/ is reached from an umbrella
    (flecsi_lite/<layer>.hh, flecsi_lite/topology/<topology>.hh): a header is either public, and
-   then an umbrella brings it, or internal, and then it lives in a detail/ folder.
+   then an umbrella brings it, or internal, and then it lives in a detail/ folder. Apps and the
+   tutorial include the specialization through its umbrellas only (specialization/sph.hh,
+   physics.hh, analytic.hh, fluid.hh): the rooms under them are its inside.
 
     python3 check_layers.py ROOT      # exit 0: no violation; 1: each violation listed with its rule
     python3 check_layers.py --self-test   # breaks each rule in a scratch tree: each must be caught
@@ -55,6 +57,9 @@ def violations(source, target):
         if a is not None and b is not None and b > a:
             found.append(f"{prefix}/{layers[a]} must not include {prefix}/{layers[b]} "
                          f"(order: {' < '.join(layers)})")
+    if source_tree in ("apps", "tutorial") and re.match(r"specialization/.+/", target):
+        umbrella = "specialization/" + target.split("/")[1] + ".hh"
+        found.append(f"{source_tree}/ includes the specialization through its umbrellas: include {umbrella}")
     if "/detail/" in target and source_tree != "tests":
         owner = target[:target.rindex("/detail/")]
         if not source.startswith(owner + "/"):
@@ -97,11 +102,12 @@ def self_test():
         "specialization/sph/run/app.hh": '#include "flecsi_lite/io/detail/handle.hh"\n',  # io's internal
         "specialization/physics/eos.hh": '#include "specialization/fluid/tait.hh"\n',  # physics -> fluid
         "apps/sod/sod.cc": '#include "tests/support/collective_checks.hh"\n',  # apps -> tests
+        "apps/sod/sod_problem.hh": '#include "specialization/sph/run/app.hh"\n',  # past the umbrella
         "tests/io/handle.cc": '#include "flecsi_lite/io/detail/handle.hh"\n',  # tests may
     }
     expected = ["flecsi_lite/data/field.hh:1", "flecsi_lite/runtime/orphan.hh:", "flecsi_lite/runtime.hh:1",
                 "specialization/sph/model/fields.hh:1", "specialization/sph/run/app.hh:1",
-                "specialization/physics/eos.hh:1", "apps/sod/sod.cc:1"]
+                "specialization/physics/eos.hh:1", "apps/sod/sod.cc:1", "apps/sod/sod_problem.hh:1"]
     with tempfile.TemporaryDirectory() as root:
         for name, text in files.items():
             os.makedirs(os.path.join(root, os.path.dirname(name)), exist_ok=True)

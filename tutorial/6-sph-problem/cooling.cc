@@ -4,7 +4,7 @@
 // rest and u follows u_floor + (u0 - u_floor) exp(-t / t_cool), which the program checks at the end.
 //
 //   mpirun -np 2 tutorial_6_sph_problem [--set cooling_time=0.1] [--set particles_per_side=48]
-#include "specialization/sph/run/app.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/execution.hh"

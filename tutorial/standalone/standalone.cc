@@ -6,7 +6,7 @@
 #include "flecsi_lite/execution.hh"
 #include "flecsi_lite/runtime.hh"
 #include "flecsi_lite/topology/narray.hh"
-#include "specialization/physics/kernels.hh"
+#include "specialization/physics.hh"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // follows 1/r (Evrard 1988), and the radii holding given fractions of the mass.
 #pragma once
 
-#include "specialization/sph/step/driver.hh"
+#include "specialization/sph.hh"
 
 #include "flecsi_lite/execution.hh"
 
