@@ -96,8 +96,9 @@ def plot_shapes(path, out):
     fig, axes = plt.subplots(len(picks), 1, figsize=(9, 2.0 * len(picks)))
     text = h5part_plot.attributes(path, "plot_dam_break_validation")["parameters"]
     text = text.decode() if isinstance(text, bytes) else str(text)
-    values = dict(line.split("#")[0].split("=", 1) for line in text.splitlines() if "=" in line.split("#")[0])
-    H = float(values["length"].strip())
+    pairs = (line.split("#")[0].split("=", 1) for line in text.splitlines() if "=" in line.split("#")[0])
+    values = {key.strip(): value.strip() for key, value in pairs}
+    H = float(values["length"])
     for ax, name in zip(np.atleast_1d(axes), picks):
         t, data, _ = h5part_plot.read_step(path, name, "plot_dam_break_validation")
         fluid = data["kind"] == 0
