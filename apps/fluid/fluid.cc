@@ -49,6 +49,9 @@ struct fluid_run : fl::fluid_state<D> {
   double min_x = std::numeric_limits<double>::max(), max_x = -std::numeric_limits<double>::max();
   double min_y = std::numeric_limits<double>::max();
   double bottom_pressure = 0;  ///< at the end: mean P + rho0 |g| y over the lowest fluid row
+  fl::gauge_settings gauge_keys;
+  std::vector<std::vector<sph::vector<D>>> gauge_points;  ///< each gauge's samples (code units)
+  fl::gauge_file gauges;
 };
 
 /// What the measuring task sums and bounds over the fluid particles.
@@ -190,6 +193,80 @@ void create(fluid_run<D>& s) {
   execute<set_wall_velocities<D>>(walls, fl::fluid_fields<D>::wall_velocity(*s.particles)).wait();
 }
 
+/// The samples of every gauge: the faces of the key `gauges` scaled by the reference length; a
+/// face on or beyond a wall is moved onto the wall's surface (the tank's inner box), where the
+/// sensors of an experiment sit. 3D: at the middle of the span.
+template<int D>
+void place_gauges(fluid_run<D>& s) {
+  const auto& l = s.layout;
+  const auto onto_tank = [&](std::array<double, 2> q) {
+    for (int k = 0; k < 2; ++k) q[k] *= s.problem.length;
+    if (!l.periodic_x) q[0] = std::clamp(q[0], l.tank_lo[0], l.tank_hi[0]);
+    q[1] = std::clamp(q[1], l.tank_lo[1], l.periodic_x ? l.tank_hi[1] : std::numeric_limits<double>::max());
+    return q;
+  };
+  for (const auto& face : s.gauge_keys.faces())
+    s.gauge_points.push_back(
+      fl::gauge_samples<D>(onto_tank(face.first), onto_tank(face.last), s.gauge_keys.samples, 0.5 * l.tank_hi[2]));
+}
+
+/// One row of the gauge file: step, t, the surge front (surge_front.hh), each gauge's P and v.
+template<int D>
+std::string gauge_row(fluid_run<D>& s) {
+  using f = sph::fields<D>;
+  auto& p = *s.particles;
+  const fl::surge_front_settings front_settings{s.layout.tank_lo[1], s.gauge_keys.front_height * s.problem.length,
+                                                2 * s.layout.dx};
+  auto front =
+    reduce<fl::surge_front_task<D>, reduction::max>(s.neighbours, front_settings, f::position()(p), f::kind(p));
+  const auto readings = fl::read_gauges<D>(s, s.gauge_points);
+  const double x = front.get();
+  std::ostringstream row;
+  row << std::setprecision(12) << s.step << "," << s.time << ",";
+  if (x > -std::numeric_limits<double>::max())
+    row << x + 0.5 * s.layout.dx;
+  else
+    row << "nan";
+  for (const auto& r : readings) {
+    row << "," << r.pressure;
+    for (int k = 0; k < D; ++k) row << "," << r.velocity[k];
+  }
+  return row.str();
+}
+
+/// Opens the gauge file (a restart continues it) and writes the first row of a new run.
+template<int D>
+void open_gauges(fluid_run<D>& s) {
+  if (s.gauge_keys.file.empty()) return;
+  place_gauges(s);
+  std::ostringstream header;
+  header << std::setprecision(6) << "# " << s.program << " gauges, " << fluid_app::problem_names().name(s.problem.type)
+         << ": length " << s.problem.length << " m, dx " << s.layout.dx << " m, rho0 " << s.fluid.eos.reference_density
+         << ", g " << std::fabs(s.fluid.body_force[1]) << "\n"
+         << "# front_x: the largest x of a fluid particle at most " << s.gauge_keys.front_height * s.problem.length
+         << " m above the floor with at least two fluid neighbours within 2 dx, plus dx/2 (m)\n";
+  for (std::size_t g = 0; g < s.gauge_points.size(); ++g) {
+    const auto& q = s.gauge_points[g];
+    header << "# gauge " << g + 1 << ": " << q.size() << " samples from (" << q.front()[0] << ", " << q.front()[1]
+           << ") to (" << q.back()[0] << ", " << q.back()[1] << ") m; p_" << g + 1
+           << " the mean Shepard-interpolated pressure (Pa; dry samples 0), v its velocity (m/s)\n";
+  }
+  header << "# step,t,front_x";
+  const char* axes[] = {"vx", "vy", "vz"};
+  for (std::size_t g = 0; g < s.gauge_points.size(); ++g) {
+    header << ",p_" << g + 1;
+    for (int k = 0; k < D; ++k) header << "," << axes[k] << "_" << g + 1;
+  }
+  header << "\n";
+  s.gauges.open(s.gauge_keys.file, header.str(), s.restarted ? std::optional<long>(s.step) : std::nullopt);
+  if (!s.restarted) s.gauges.write(gauge_row(s));
+}
+
+template<int D>
+void write_gauges(fluid_run<D>& s) {
+  if (s.gauges.is_open() && s.step % s.gauge_keys.every == 0) s.gauges.write(gauge_row(s));
+}
+
 /// The front Z/L (the largest fluid x plus half a spacing) at time T = t sqrt(2 g / L).
 template<int D>
 double front_at(const fluid_run<D>& s, double T) {
@@ -255,6 +332,11 @@ void report(fluid_run<D>& s) {
              << " L^2/nu) max |v - v_exact| = " << e << " v_max";
       break;
     case problem_type::dam_break: {
+      if (s.problem.column_width != 1 || s.problem.column_height != 2) {
+        line << "; largest fluid x " << s.series.back().front << " (Martin & Moyce's column is 1 x 2: "
+             << "apps/fluid/dam_break_fronts.py reads the gauge file)";
+        break;
+      }
       const auto r = dam_break_errors(s);
       line << "; front against Martin & Moyce (1952) over 1 <= T <= 2.8 (" << r.points
            << " points): mean relative error " << r.mean_error << ", largest " << r.max_error
@@ -349,6 +431,15 @@ int run(const app::run_context& context) {
   if (s.problem.type == problem_type::dam_break && !(s.fluid.body_force[1] < 0))
     throw runtime::parameter_error("fluid: dam_break needs gravity along -y (body_force_y < 0)");
   s.layout = fluid_app::layout_of(s.program, s.problem, s.fluid);
+  s.gauge_keys = fl::gauge_parameters().read(context.parameters());
+  if (s.gauge_keys.file == "auto")
+    s.gauge_keys.file = app::beside_output(s.files.output_file, s.program, ".gauges.csv");
+  if (!s.gauge_keys.file.empty())
+    app::check_distinct_file("gauge_file", s.gauge_keys.file,
+                             {{"output_file", s.files.output_file},
+                              {"checkpoint_file", s.files.checkpoint_file},
+                              {"restart_file", s.files.restart_file},
+                              {"statistics_file", s.statistics_keys.file}});
   if (s.problem.type == problem_type::poiseuille) {
     const double unit = s.problem.length * s.problem.length / s.fluid.kinematic_viscosity();
     s.check_times = {0.1 * unit, 0.2 * unit, s.run.end_time};
@@ -369,6 +460,8 @@ int run(const app::run_context& context) {
   auto m = fl::make_fluid_control_model<fluid_run<D>>({set_domain<D>, create<D>});
   m.action("initialize", "measure", measure<D>).after("diagnostics");
   m.action("analyze", "measure", measure<D>).after("conserved_quantities");
+  m.action("initialize", "gauges", open_gauges<D>).after("measure");
+  m.action("analyze", "gauges", write_gauges<D>).after("measure");
   m.action("finalize", "report", report<D>);
   return context.execute(m, s, [&context](const fluid_run<D>& state) { return check(state, context.options()); });
 }
@@ -381,6 +474,7 @@ int main(int argc, char** argv) {
   definition.declare_parameters = [](runtime::parameter_schema& schema) {
     fluid_app::problem_parameters().declare(schema);
     fl::fluid_parameters().declare(schema);
+    fl::gauge_parameters().declare(schema);
   };
   definition.physics_defaults.kernel = flecsph::physics::kernel_type::wendland_c2;
   definition.physics_defaults.adaptive_smoothing_length = false;

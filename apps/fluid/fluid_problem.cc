@@ -37,6 +37,19 @@ rt::parameter_block<problem> declare() {
   p.real("column_offset", &problem::column_offset, "shift of the fluid along x (0: at the left wall)")
     .range(-1e10, 1e10);
   p.real("span", &problem::span, "3D dam break: periodic width along z (0: 7 dx)").range(0, 1e10);
+  p.real("column_width", &problem::column_width, "dam break: the column's width (units of length)")
+    .greater_than(0)
+    .at_most(1e6);
+  p.real("column_height", &problem::column_height, "dam break: the column's height (units of length)")
+    .greater_than(0)
+    .at_most(1e6);
+  p.real("tank_length", &problem::tank_length,
+         "dam break: the tank's inner length (units of length; rounded down to whole spacings)")
+    .greater_than(0)
+    .at_most(1e6);
+  p.real("tank_height", &problem::tank_height, "dam break: the tank's inner height (units of length)")
+    .greater_than(0)
+    .at_most(1e6);
   return p;
 }
 
@@ -81,10 +94,18 @@ layout layout_of(const std::string& program, const problem& p, flecsph::fluid::f
       l.speed_scale = std::sqrt(g * L);
       break;
     }
-    case problem_type::dam_break:
-      l.fluid_lo = {p.column_offset, 0}, l.fluid_hi = {p.column_offset + L, 2 * L};
-      l.tank_lo = {0, 0}, l.tank_hi = {4 * L, 3 * L};
-      l.speed_scale = std::sqrt(2 * g * 2 * L);  // the front's speed, sqrt(2 g H) with H = 2 L
+    case problem_type::dam_break: {
+      l.fluid_lo = {p.column_offset, 0}, l.fluid_hi = {p.column_offset + p.column_width * L, p.column_height * L};
+      // The tank's length a whole number of spacings, so that the end walls' lattice continues the
+      // floor's (TrixiParticles rounds 5.366 H down the same way); 4 L is one already.
+      const double spacings = p.tank_length * double(p.particles);
+      const double whole = std::floor(spacings + 1e-9);
+      const double tank_length = std::fabs(spacings - whole) <= 1e-9 ? p.tank_length * L : whole * l.dx;
+      l.tank_lo = {0, 0}, l.tank_hi = {tank_length, p.tank_height * L};
+      l.speed_scale = std::sqrt(2 * g * p.column_height * L);  // the front's speed, sqrt(2 g H)
+      if (!(l.fluid_hi[1] <= l.tank_hi[1] * (1 + 1e-12)))
+        throw rt::parameter_error(program + ": column_height = " + text(p.column_height) +
+                                  " is above tank_height = " + text(p.tank_height));
       if (p.dimension == 3) {
         // A whole number of spacings, so that the periodic lattice is uniform; the search needs
         // a period above twice the interaction radius 2 h (ntree periodic reach).
@@ -96,6 +117,7 @@ layout layout_of(const std::string& program, const problem& p, flecsph::fluid::f
                                     text(2 * support) + ": the periodic images would overlap");
       }
       break;
+    }
     case problem_type::poiseuille:
     case problem_type::couette: {
       const double period = p.channel_length > 0 ? p.channel_length : 0.5 * L;

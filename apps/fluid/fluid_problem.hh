@@ -1,7 +1,7 @@
 // The liquid problems of the fluid app (square or cubic lattice of spacing dx, Adami et al. 2012
 // dummy walls in layers): a still tank (hydrostatics), plane Poiseuille and Couette flow (periodic
-// along x), and the dam break of Martin & Moyce (1952), also in 3D (periodic along the span z):
-// the parameters and the particles.
+// along x), and the dam break of Martin & Moyce (1952) or of Lobovsky et al. (2014) (the keys
+// column_* and tank_*), also in 3D (periodic along the span z): the parameters and the particles.
 #pragma once
 
 #include "specialization/fluid.hh"
@@ -33,6 +33,9 @@ struct problem {
   double tank_width = 0;         ///< still tank: width (0: 2 H)
   double column_offset = 0;      ///< shifts the fluid along x (0: touching the left wall)
   double span = 0;               ///< 3D dam break: the periodic width along z (0: 7 dx)
+  /// Dam break geometry in units of `length`: the column (Martin & Moyce 1952: 1 x 2; Lobovsky
+  /// et al. 2014 and Marrone et al. 2011, with length = H: 2 x 1) and the tank (4 x 3; 5.366 x 4).
+  double column_width = 1, column_height = 2, tank_length = 4, tank_height = 3;
 };
 
 const flecsi_lite::runtime::parameter_block<problem>& problem_parameters();

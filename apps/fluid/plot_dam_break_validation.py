@@ -1,0 +1,131 @@
+#!/usr/bin/python3
+"""Figures of the dam break's verification and validation (docs/fluid-flow.md), from the fluid
+app's gauge files (gauge_file: the front operator's front_x and the wall gauges) and H5Part output:
+
+    plot_dam_break_validation.py fronts --reference RUN.gauges.csv ... --martin-moyce RUN.gauges.csv ... --out F.png
+        left: x_f / H against t sqrt(g/H) in the Marrone / Lobovsky geometry with TrixiParticles'
+        converged H/400 run; right: Z = x_f / a against T = t sqrt(2 g / a) in the 1 x 2 column with
+        Martin & Moyce's Table 2, each run also delayed by its best constant shift (stated).
+    plot_dam_break_validation.py pressure RUN.gauges.csv ... --out P.png
+        p / (rho0 g H) at gauges 1 and 2 (Lobovsky et al.'s sensors 1 and 2) against t sqrt(g/H),
+        with TrixiParticles' H/400 sensors and the issue's bands for the first impact.
+    plot_dam_break_validation.py shapes RUN.h5part --out S.png
+        the water at every output time (colour: pressure).
+"""
+import argparse
+import math
+import os
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "plotting"))
+import dam_break_fronts as fronts  # noqa: E402
+
+
+def label(run):
+    return "FleCSPH-lite dx = %s/%.0f" % ("H" if run.length > 0.1 else "a", run.length / run.dx)
+
+
+def plot_fronts(reference_runs, martin_moyce_runs, out):
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5.5))
+    ax = axes[0]
+    T_ref, x_ref = fronts.reference_front()
+    ax.plot(T_ref, x_ref, "k-", lw=2, label="TrixiParticles WCSPH H/400 (converged reference)")
+    ax.axvspan(1.0, 2.3, color="0.92", label="compared: 1 <= t sqrt(g/H) <= 2.3")
+    for path in reference_runs:
+        run = fronts.GaugeFile(path)
+        mean, _, arrival, _ = fronts.against_reference(run)
+        ax.plot(run["t"] * math.sqrt(run.g / run.length), run["front_x"] / run.length, "-",
+                label="%s: mean error %.2f%%, wall at %.3f" % (label(run), 100 * mean, arrival))
+    ax.set_xlim(0, 2.6); ax.set_ylim(2, 5.5)
+    ax.set_xlabel("t sqrt(g / H)"); ax.set_ylabel("x_f / H")
+    ax.set_title("Marrone / Lobovsky geometry (column 2H x H, wall at 5.366 H)", fontsize=10)
+    ax.legend(fontsize=8)
+    ax = axes[1]
+    T_exp, Z_exp = fronts.martin_moyce_points(0, 10)
+    ax.plot(T_exp, Z_exp, "ko", label="Martin & Moyce (1952) Table 2, a = 2.25 in, n^2 = 2")
+    ax.axvspan(1.0, 2.8, color="0.92", label="compared: 1 <= T <= 2.8 (9 points)")
+    for path in martin_moyce_runs:
+        run = fronts.GaugeFile(path)
+        raw, shift, mean = fronts.against_martin_moyce(run)
+        T, Z = fronts.martin_moyce_curve(run)
+        line, = ax.plot(T, Z, "-", label="%s: raw mean error %.1f%%" % (label(run), 100 * np.mean(np.abs(raw))))
+        ax.plot(T + shift, Z, "--", color=line.get_color(),
+                label="  delayed by %.3f: mean error %.2f%%" % (shift, 100 * mean))
+    ax.set_xlim(0, 3.2); ax.set_ylim(1, 4)
+    ax.set_xlabel("T = t sqrt(2 g / a)"); ax.set_ylabel("Z = x_f / a")
+    ax.set_title("Martin & Moyce column (a x 2a)", fontsize=10)
+    ax.legend(fontsize=8)
+    fig.tight_layout(); fig.savefig(out, dpi=120)
+
+
+def plot_pressure(runs, out):
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5))
+    reference = np.loadtxt(fronts.REFERENCE)
+    H_ref = fronts.REFERENCE_H
+    T_ref = reference[:, 0] * math.sqrt(fronts.G / H_ref)
+    bands = {1: (2.0, 4.0), 2: (1.5, 2.6)}  # the issue's bounds on the first peak, rho0 g H
+    for k, ax in zip((1, 2), axes):
+        ax.plot(T_ref, reference[:, 1 + k] / (1000 * fronts.G * H_ref), "k-", lw=1.5,
+                label="TrixiParticles WCSPH H/400 (H = 0.6 m)")
+        for path in runs:
+            run = fronts.GaugeFile(path)
+            ax.plot(run["t"] * math.sqrt(run.g / run.length), run["p_%d" % k] / (run.rho0 * run.g * run.length), "-",
+                    lw=1, label="%s (H = %g m)" % (label(run), run.length))
+        low, high = bands[k]
+        ax.axhspan(low, high, xmin=0, xmax=1, color="tab:red", alpha=0.12, label="first peak: issue's band")
+        if k == 2:
+            ax.axvspan(2.33, 2.49, color="tab:blue", alpha=0.12, label="onset p > 0.1 rho g H: issue's band")
+        ax.set_xlim(0, 8); ax.set_ylim(-0.2, 4.5)
+        ax.set_xlabel("t sqrt(g / H)"); ax.set_ylabel("p / (rho0 g H)")
+        ax.set_title("sensor %d (downstream wall, centre %g H)" % (k, 0.01 if k == 1 else 0.05), fontsize=10)
+        ax.legend(fontsize=8)
+    fig.tight_layout(); fig.savefig(out, dpi=120)
+
+
+def plot_shapes(path, out):
+    import h5part_plot
+    names = h5part_plot.step_indices(path, "plot_dam_break_validation")
+    picks = names[:: max(1, len(names) // 6)][:6]
+    fig, axes = plt.subplots(len(picks), 1, figsize=(9, 2.0 * len(picks)))
+    text = h5part_plot.attributes(path, "plot_dam_break_validation")["parameters"]
+    text = text.decode() if isinstance(text, bytes) else str(text)
+    pairs = (line.split("#")[0].split("=", 1) for line in text.splitlines() if "=" in line.split("#")[0])
+    values = {key.strip(): value.strip() for key, value in pairs}
+    H = float(values["length"])
+    for ax, name in zip(np.atleast_1d(axes), picks):
+        t, data, _ = h5part_plot.read_step(path, name, "plot_dam_break_validation")
+        fluid = data["kind"] == 0
+        ax.scatter(data["x"][fluid] / H, data["y"][fluid] / H, s=0.3, c=data["P"][fluid], cmap="viridis")
+        ax.scatter(data["x"][~fluid] / H, data["y"][~fluid] / H, s=0.3, c="0.6")
+        ax.set_aspect("equal"); ax.set_xlim(-0.2, 5.6); ax.set_ylim(-0.2, 2.0)
+        ax.set_title("t sqrt(g/H) = %.2f (colour: P)" % (t * math.sqrt(9.81 / H)), fontsize=8)
+        ax.tick_params(labelsize=7)
+    fig.tight_layout(); fig.savefig(out, dpi=120)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("figure", choices=["fronts", "pressure", "shapes"])
+    parser.add_argument("files", nargs="*")
+    parser.add_argument("--reference", nargs="*", default=[])
+    parser.add_argument("--martin-moyce", nargs="*", default=[])
+    parser.add_argument("--out", required=True)
+    args = parser.parse_args()
+    if args.figure == "fronts":
+        plot_fronts(args.reference, args.martin_moyce, args.out)
+    elif args.figure == "pressure":
+        plot_pressure(args.files, args.out)
+    else:
+        plot_shapes(args.files[0], args.out)
+    print("wrote", args.out)
+
+
+if __name__ == "__main__":
+    main()
