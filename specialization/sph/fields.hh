@@ -110,6 +110,15 @@ struct fields {
   // balance = work only: the weight of a particle in the next distribution, its neighbours at the
   // last search (zero before the first: the sample sort then balances counts).
   static inline const definition<double> work{"work"};
+  // The Cullen & Dehnen (2010) viscosity switch only (viscosity_switch = on; with it off no file
+  // holds them, files_fields()): each particle's alpha (output and restart); div v of its last
+  // update (which its neighbours' limiter reads), the one before and the time of that one, so a
+  // restart continues bitwise; the shear tr(S S^T) (in memory only).
+  static inline const definition<double> viscosity_alpha{"alpha", persist::output().restart()};
+  static inline const definition<double> switch_divergence{"switch_div_v", persist::restart()};
+  static inline const definition<double> switch_previous_divergence{"switch_div_v_previous", persist::restart()};
+  static inline const definition<double> switch_previous_time{"switch_time", persist::restart()};
+  static inline const definition<double> switch_shear{"switch_shear"};
 };
 
 }  // namespace flecsph::sph

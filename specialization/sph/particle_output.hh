@@ -27,7 +27,11 @@ std::vector<flecsi_lite::data::registered_field> files_fields(const simulation<D
                                   field.name == f::internal_energy_half.name() || field.name == f::time_bin.name() ||
                                   field.name == f::step_begin.name() || field.name == f::step_end.name() ||
                                   field.name == f::kicked_ticks.name();
-    if ((gravity_field && !gravity) || (individual_field && !individual))
+    const bool switch_field = field.name == f::viscosity_alpha.name() || field.name == f::switch_divergence.name() ||
+                              field.name == f::switch_previous_divergence.name() ||
+                              field.name == f::switch_previous_time.name();
+    if ((gravity_field && !gravity) || (individual_field && !individual) ||
+        (switch_field && !s.physics.viscosity_switch.enabled))
       field.persistence = flecsi_lite::data::persistence();
   }
   return all;

@@ -4,9 +4,11 @@
 // and may place their own tasks inside the step by name:
 //
 //   initial_data                      (the app: particles and their fields)
-//   initialize    search -> density -> equation_of_state -> forces -> first_time_step -> diagnostics
+//   initialize    search -> density -> equation_of_state -> viscosity_switch -> forces -> first_time_step
+//                 -> diagnostics
 //   evolve: while time < end_time
-//     advance     kick_drift -> search -> density -> equation_of_state -> forces -> kick -> clock
+//     advance     kick_drift -> search -> density -> equation_of_state -> viscosity_switch -> forces -> kick
+//                 -> clock
 //     analyze     conserved_quantities, progress
 //     output      (the app)
 //   finalize      summary (then the app's reports)
@@ -18,6 +20,7 @@
 #include "specialization/sph/instances.hh"
 #include "specialization/sph/simulation.hh"
 #include "specialization/sph/steps.hh"
+#include "specialization/sph/viscosity_switch.hh"
 
 #include "flecsi_lite/control.hh"
 
@@ -73,7 +76,10 @@ flecsi_lite::control::control_model<State> make_control_model() {
       s.started_step = s.step;
       s.started_time = s.time;
     });
+    // The Cullen & Dehnen alpha (a no-op unless viscosity_switch = on).
+    auto alpha = on("initialize", "viscosity_switch", [](base& s) { update_viscosity_switch(s, true); });
     m.depends(density, search).depends(pressure, density).depends(forces, pressure).depends(step, forces);
+    m.depends(alpha, pressure).depends(forces, alpha);
     m.depends(diagnostics, step);
   }
   // advance: one kick-drift-kick step.
@@ -86,7 +92,9 @@ flecsi_lite::control::control_model<State> make_control_model() {
     auto forces = on("advance", "forces", update_forces<D>);
     auto kick = on("advance", "kick", second_kick<D>);
     auto clock = on("advance", "clock", [](base& s) { choose_time_step(s, true); });
+    auto alpha = on("advance", "viscosity_switch", [](base& s) { update_viscosity_switch(s, false); });
     m.depends(search, drift).depends(density, search).depends(pressure, density).depends(forces, pressure);
+    m.depends(alpha, pressure).depends(forces, alpha);
     m.depends(kick, forces).depends(clock, kick);
   }
   on("analyze", "conserved_quantities", conserved_diagnostics<D>);
