@@ -12,10 +12,15 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import gresho_analysis  # noqa: E402
 import h5part_plot  # noqa: E402
 
+PROGRAM = "check_gresho"
+
 
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
+    if not os.path.isfile(sys.argv[1]):
+        print("%s: '%s' does not exist (the run did not write it)" % (PROGRAM, sys.argv[1]), file=sys.stderr)
+        sys.exit(3)
     time, data, _ = h5part_plot.read_step(sys.argv[1], None, "check_gresho")
     r, v_phi = gresho_analysis.polar(data)
     error = gresho_analysis.l1_error(r, v_phi)

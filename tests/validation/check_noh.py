@@ -12,10 +12,15 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import h5part_plot  # noqa: E402
 import noh_analysis  # noqa: E402
 
+PROGRAM = "check_noh"
+
 
 def main():
     if len(sys.argv) != 4:
         sys.exit(__doc__)
+    if not os.path.isfile(sys.argv[1]):
+        print("%s: '%s' does not exist (the run did not write it)" % (PROGRAM, sys.argv[1]), file=sys.stderr)
+        sys.exit(3)
     time, data, attributes = h5part_plot.read_step(sys.argv[1], None, "check_noh")
     number = h5part_plot.number
     dimension = int(number(attributes, "dimension", 2))
