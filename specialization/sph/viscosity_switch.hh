@@ -23,6 +23,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <tuple>
+#include <vector>
 
 namespace flecsph::sph {
 
