@@ -14,13 +14,15 @@
 namespace flecsph::sph {
 
 /// Whether run `s` has `feature`, a name a field's definition may give (persist only_with): the
-/// SPH features are "gravity" (gravity = on) and "individual_time_steps" (time_steps = individual).
+/// SPH features are "gravity" (gravity = on), "individual_time_steps" (time_steps = individual)
+/// and "viscosity_switch" (viscosity_switch = on).
 template<int D>
 bool has_feature(const simulation<D>& s, const std::string& feature) {
   if (feature == "gravity") return s.physics.gravity.enabled;
   if (feature == "individual_time_steps") return s.physics.individual_time_steps();
+  if (feature == "viscosity_switch") return s.physics.viscosity_switch.enabled;
   throw std::logic_error("sph: a field is declared only_with(\"" + feature +
-                         "\"), which is no feature of an SPH run (gravity, individual_time_steps)");
+                         "\"), which is no feature of an SPH run (gravity, individual_time_steps, viscosity_switch)");
 }
 
 /// The registered fields that the files of run `s` hold (as their roles say): a field declared

@@ -30,7 +30,8 @@ enum class particle_kind : std::int32_t { fluid = 0, wall = 1 };
 /// The fields of dimension D, declared once (fields are per topology type, ntree<D>), each with
 /// its persistence (flecsi_lite/data/persistence.hh): what the output, the checkpoints and the
 /// initial-data reader hold is exactly what these definitions say, and a field that exists in
-/// files only with a feature of the run says so (`only_with`: "gravity", "individual_time_steps";
+/// files only with a feature of the run says so (`only_with`: "gravity", "individual_time_steps",
+/// "viscosity_switch";
 /// run_features() in files/particle_output.hh says which a run has).
 ///
 /// Registration. Each definition registers its field with ntree<D> (data/field_registry.hh; its
@@ -126,6 +127,19 @@ struct fields {
   // balance = work only: the weight of a particle in the next distribution, its neighbours at the
   // last search (zero before the first: the sample sort then balances counts).
   static inline const definition<double> work{"work"};
+  // The Cullen & Dehnen (2010) viscosity switch only (viscosity_switch = on; with it off no file
+  // holds them, only_with("viscosity_switch")): each particle's alpha (output and restart); div v of its last
+  // update (which its neighbours' limiter reads), the one before and the time of that one, so a
+  // restart continues bitwise; the shear tr(S S^T) (in memory only).
+  static inline const definition<double> viscosity_alpha{"alpha",
+                                                         persist::output().restart().only_with("viscosity_switch")};
+  static inline const definition<double> switch_divergence{"switch_div_v",
+                                                           persist::restart().only_with("viscosity_switch")};
+  static inline const definition<double> switch_previous_divergence{"switch_div_v_previous",
+                                                                    persist::restart().only_with("viscosity_switch")};
+  static inline const definition<double> switch_previous_time{"switch_time",
+                                                              persist::restart().only_with("viscosity_switch")};
+  static inline const definition<double> switch_shear{"switch_shear"};
 };
 
 }  // namespace flecsph::sph

@@ -47,6 +47,20 @@ physics_block declare_physics(const physics_settings& defaults) {
     .greater_than(0)
     .at_most(1);
   p.boolean("balsara_switch", &physics_settings::balsara, "Balsara (1995) switch on the viscosity");
+  using physics::viscosity_switch_settings;
+  p.boolean("viscosity_switch", member(&physics_settings::viscosity_switch, &viscosity_switch_settings::enabled),
+            "Cullen & Dehnen (2010) time-dependent alpha per particle (off: constant viscosity_alpha)");
+  p.real("viscosity_alpha_min", member(&physics_settings::viscosity_switch, &viscosity_switch_settings::alpha_min),
+         "viscosity switch: the smallest alpha")
+    .range(0, 100);
+  p.real("viscosity_alpha_max", member(&physics_settings::viscosity_switch, &viscosity_switch_settings::alpha_max),
+         "viscosity switch: the largest alpha (and the alpha at t = 0)")
+    .range(0, 100);
+  p.real("viscosity_decay_length",
+         member(&physics_settings::viscosity_switch, &viscosity_switch_settings::decay_length),
+         "viscosity switch: l of the decay time h_support / (2 l v_signal)")
+    .greater_than(0)
+    .at_most(10);
   p.real("conductivity_alpha", &physics_settings::conductivity,
          "alpha_u of the Price (2008) artificial conductivity (0: off)")
     .range(0, 100);
@@ -104,6 +118,20 @@ physics_block declare_physics(const physics_settings& defaults) {
         "list_skin = " + std::to_string(s.list_skin) +
         " with time_steps = individual: individual steps search the active particles of every step (their lists "
         "only), so lists are never kept; set list_skin = 0");
+    if (s.viscosity_switch.enabled) {
+      const auto& w = s.viscosity_switch;
+      if (s.balsara)
+        throw flecsi_lite::runtime::parameter_error(
+          "viscosity_switch = on with balsara_switch = on: the Cullen & Dehnen switch has its own limiter against "
+          "shear (which replaces Balsara's factor); set balsara_switch = off");
+      if (w.alpha_min > w.alpha_max)
+        throw flecsi_lite::runtime::parameter_error("viscosity_alpha_min = " + std::to_string(w.alpha_min) +
+                                                    " exceeds viscosity_alpha_max = " + std::to_string(w.alpha_max));
+      if (!(s.viscosity.alpha > 0))
+        throw flecsi_lite::runtime::parameter_error(
+          "viscosity_alpha = 0 with viscosity_switch = on: the switch keeps beta / viscosity_alpha as its ratio of "
+          "beta to alpha, so viscosity_alpha must be > 0");
+    }
     const int v = s.time_steps.limiter;
     if (v != 0 && (v < 2 || (v & (v - 1)) != 0))
       throw flecsi_lite::runtime::parameter_error("time_step_limiter = " + std::to_string(v) +

@@ -7,6 +7,7 @@
 #include "specialization/physics/eos.hh"
 #include "specialization/physics/kernels.hh"
 #include "specialization/physics/viscosity.hh"
+#include "specialization/physics/viscosity_switch.hh"
 
 #include "flecsi_lite/runtime.hh"
 #include "flecsi_lite/topology/ntree.hh"
@@ -61,7 +62,9 @@ struct physics_settings {
   physics::equation_of_state eos{};
   /// Monaghan & Gingold (1983) viscosity, seed eqs. (1.10)-(1.11): alpha 1, beta 2, epsilon 0.01.
   physics::viscosity_parameters viscosity{};
-  bool balsara = false;       ///< Balsara (1995) switch on the viscosity
+  bool balsara = false;  ///< Balsara (1995) switch on the viscosity
+  /// Cullen & Dehnen (2010) per-particle alpha (sph/viscosity_switch.hh); off: the constant alpha.
+  physics::viscosity_switch_settings viscosity_switch{};
   double conductivity = 1.0;  ///< alpha_u of the Price (2008) artificial conductivity; 0: off
   /// Adaptive h = eta (m/rho)^(1/D) by Newton-Raphson with grad-h terms (Price 2012), or fixed h.
   bool adaptive_smoothing_length = true;

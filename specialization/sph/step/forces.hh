@@ -28,7 +28,9 @@ struct force_fields {
   const vector<D>* x;
   const vector<D>* v;
   const double *m, *h, *rho, *P, *cs, *pressure_term, *u;
-  const double* balsara;  ///< null with the switch off: every factor is 1, and Pi_ab * 1 = Pi_ab
+  /// The per-particle factor of Pi_ab: the Balsara factor, or alpha of the Cullen & Dehnen switch
+  /// (viscosity_factor); null with both off: every factor is 1, and Pi_ab * 1 = Pi_ab.
+  const double* balsara;
   // Self-gravity only: zeta / Omega (owned and ghosts), G a of the tree (owned) and G / 2.
   const double* zeta_over_omega = nullptr;
   const vector<D>* gravity_acceleration = nullptr;
@@ -128,6 +130,19 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
 }
 }  // namespace detail
 
+/// The per-particle factor of Pi_ab (force_fields::balsara) and, through `settings`, the viscosity
+/// parameters: with the Cullen & Dehnen switch alpha_a itself, the parameters' alpha 1 and beta
+/// beta / alpha, so that Pi_ab = alpha_ab [beta / alpha mu^2 - c mu] / rho with alpha_ab the mean
+/// of the pair (beta = 2 alpha_ab by default, as CD10 sec. 2.1); else the Balsara factors or none.
+inline const double* viscosity_factor(physics_settings& settings, const double* balsara, const double* alpha) {
+  if (settings.viscosity_switch.enabled) {
+    settings.viscosity.beta /= settings.viscosity.alpha;
+    settings.viscosity.alpha = 1.0;
+    return alpha;
+  }
+  return settings.balsara ? balsara : nullptr;
+}
+
 namespace detail {
 /// The loop of compute_forces over one part's targets, whose lists name the first `particles`
 /// particles; with `in.gravity_acceleration` set (self-gravity) the tree's acceleration is added,
@@ -206,13 +221,13 @@ double compute_forces(neighbours_ro<D> neighbours, physics_settings settings, do
                       ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> h, ro_neighbours<double, Ghost> rho,
                       ro_neighbours<double, Ghost> P, ro_neighbours<double, Ghost> cs,
                       ro_neighbours<double, Ghost> pressure_term, ro_neighbours<double, Ghost> u,
-                      ro_neighbours<double, Ghost> balsara, ro<particle_kind> kind, wo<vector<D>> acceleration,
-                      wo<double> du_dt, wo<double> own_time_step) {
+                      ro_neighbours<double, Ghost> balsara, ro_neighbours<double, Ghost> alpha, ro<particle_kind> kind,
+                      wo<vector<D>> acceleration, wo<double> du_dt, wo<double> own_time_step) {
   const detail::force_fields<D> in{x.data(),   v.data(),
                                    m.data(),   h.data(),
                                    rho.data(), P.data(),
                                    cs.data(),  pressure_term.data(),
-                                   u.data(),   settings.balsara ? balsara.data() : nullptr};
+                                   u.data(),   viscosity_factor(settings, balsara.data(), alpha.data())};
   return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt,
                                       own_time_step);
 }
@@ -229,14 +244,14 @@ double compute_forces_with_gravity(neighbours_ro<D> neighbours, physics_settings
                                    ro_neighbours<double, Ghost> rho, ro_neighbours<double, Ghost> P,
                                    ro_neighbours<double, Ghost> cs, ro_neighbours<double, Ghost> pressure_term,
                                    ro_neighbours<double, Ghost> u, ro_neighbours<double, Ghost> balsara,
-                                   ro_neighbours<double, Ghost> zeta_over_omega, ro<vector<D>> gravity_acceleration,
-                                   ro<particle_kind> kind, wo<vector<D>> acceleration, wo<double> du_dt,
-                                   wo<double> own_time_step) {
+                                   ro_neighbours<double, Ghost> alpha, ro_neighbours<double, Ghost> zeta_over_omega,
+                                   ro<vector<D>> gravity_acceleration, ro<particle_kind> kind,
+                                   wo<vector<D>> acceleration, wo<double> du_dt, wo<double> own_time_step) {
   detail::force_fields<D> in{x.data(),   v.data(),
                              m.data(),   h.data(),
                              rho.data(), P.data(),
                              cs.data(),  pressure_term.data(),
-                             u.data(),   settings.balsara ? balsara.data() : nullptr};
+                             u.data(),   viscosity_factor(settings, balsara.data(), alpha.data())};
   if (settings.gravity.grad_h) in.zeta_over_omega = zeta_over_omega.data();
   in.gravity_acceleration = gravity_acceleration.data();
   in.half_G = 0.5 * settings.gravity.constant;

@@ -1,7 +1,7 @@
 // The SPH driver (seed Algorithm 3) as a control model: the physics steps of one time step
 // (steps.hh) as named actions, ordered by their dependencies, in a cycle of advance, analyze and
 // output, with the diagnostics (diagnostics.hh). The force evaluation (search -> density ->
-// equation_of_state -> forces) is declared once, as the stage "force_evaluation" that
+// equation_of_state -> viscosity_switch -> forces) is declared once, as the stage "force_evaluation" that
 // "initialize" runs for the state at t = 0 (unless a restart restored it) and every "advance"
 // runs after the drift. Apps add their initial data, output and reports, and place their own
 // tasks by name:
@@ -13,7 +13,7 @@
 //     analyze     conserved_quantities, progress
 //     output      (the app)
 //   finalize      summary (then the app's reports)
-//   stage force_evaluation: search -> density -> equation_of_state -> forces
+//   stage force_evaluation: search -> density -> equation_of_state -> viscosity_switch -> forces
 //
 //   m.action("force_evaluation", "cooling", cool).after("forces");  // at t = 0 and in every step
 //   m.action("advance", "potential", push).before("kick");           // in every step only
@@ -23,6 +23,7 @@
 #include "specialization/sph/model/simulation.hh"
 #include "specialization/sph/step/diagnostics.hh"
 #include "specialization/sph/step/steps.hh"
+#include "specialization/sph/step/viscosity_switch.hh"
 
 #include "flecsi_lite/control.hh"
 
@@ -59,8 +60,11 @@ flecsi_lite::control::control_model<State> make_control_model() {
                      [](base& s) { update_neighbours(s, std::exchange(s.redistribute_next, false)); });
     auto density = on("force_evaluation", "density", update_density<D>);
     auto pressure = on("force_evaluation", "equation_of_state", update_pressure<D>);
+    // The Cullen & Dehnen alpha (a no-op unless viscosity_switch = on).
+    auto alpha =
+      on("force_evaluation", "viscosity_switch", [](base& s) { update_viscosity_switch(s, s.initializing); });
     auto forces = on("force_evaluation", "forces", update_forces<D>);
-    m.depends(density, search).depends(pressure, density).depends(forces, pressure);
+    m.depends(density, search).depends(pressure, density).depends(alpha, pressure).depends(forces, alpha);
   }
   // initialize: the state at t = 0 and the first time step (a restart restored them all).
   {

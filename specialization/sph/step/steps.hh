@@ -211,9 +211,9 @@ template<int D>
 void update_forces(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
-  const auto fields_read =
-    std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
-                    f::pressure(p), f::sound_speed(p), f::pressure_term(p), f::internal_energy(p), f::balsara(p));
+  const auto fields_read = std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
+                                           f::density(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p),
+                                           f::internal_energy(p), f::balsara(p), f::viscosity_alpha(p));
   const auto fields_written =
     std::make_tuple(f::kind(p), f::acceleration(p), f::internal_energy_rate(p), f::own_time_step(p));
   const double none = std::numeric_limits<double>::max();
