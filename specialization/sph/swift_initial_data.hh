@@ -120,6 +120,7 @@ std::uint64_t read_swift_initial_data(simulation<D>& s, const std::string& path,
   if (in.particle_count() == 0) throw std::invalid_argument(in.where() + " holds no particles");
   create_particles(s, in.block().count);
   flecsi_lite::data::read_fields(*s.particles, in, flecsi_lite::data::role::initial);
+  detail::check_initial_ids(in);
   detail::check_particle_set(s, in.where());
   return in.particle_count();
 }
