@@ -38,12 +38,30 @@ inline void check_time_bins(const flecsi_lite::io::h5part_reader& in, const time
                              " values: it must hold integers");
   }
   const auto block = in.block(0);
-  const auto bins = in.read<std::int64_t>(0, "time_bin", block);
-  const auto begins = in.read<std::int64_t>(0, "step_begin", block);
-  const auto ends = in.read<std::int64_t>(0, "step_end", block);
+  // Every integer type as int64 (a uint64 beyond 2^63 wraps to a negative value: refused alike).
+  const auto integers = [&](const char* name) {
+    std::vector<std::int64_t> values;
+    switch (in.dataset_type(0, name)) {
+      case io::element_type::int32:
+        for (const std::int32_t v : in.read<std::int32_t>(0, name, block)) values.push_back(v);
+        break;
+      case io::element_type::uint64:
+        for (const std::uint64_t v : in.read<std::uint64_t>(0, name, block))
+          values.push_back(static_cast<std::int64_t>(v));
+        break;
+      default:
+        values = in.read<std::int64_t>(0, name, block);
+    }
+    return values;
+  };
+  const auto bins = integers("time_bin");
+  const auto begins = integers("step_begin");
+  const auto ends = integers("step_end");
   const auto ids = in.read<std::uint64_t>(0, "id", block);
-  std::vector<std::int32_t> kinds;
-  if (in.has_dataset(0, "kind")) kinds = in.read<std::int32_t>(0, "kind", block);
+  std::vector<std::int64_t> kinds;
+  if (in.has_dataset(0, "kind") && in.dataset_type(0, "kind") != io::element_type::float64 &&
+      in.dataset_type(0, "kind") != io::element_type::float32)
+    kinds = integers("kind");
   std::optional<io::failure_record> failed;
   std::int64_t earliest = timeline::span;
   for (std::size_t a = 0; a < ids.size() && !failed; ++a) {
