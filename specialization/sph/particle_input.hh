@@ -89,8 +89,9 @@ template<int D>
 std::int64_t read_particles(simulation<D>& s, const flecsi_lite::io::h5part_reader& in, std::int64_t step = -1) {
   if (step < 0) step = in.last_step();
   create_particles_for(s, in, step);
-  flecsi_lite::data::read_fields(*s.particles, in, step, flecsi_lite::data::role::initial);
+  // Before the fields: a NaN id must not reach the field reader's conversion on one rank only.
   detail::check_initial_ids(flecsi_lite::io::h5part_step_columns(in, step));
+  flecsi_lite::data::read_fields(*s.particles, in, step, flecsi_lite::data::role::initial);
   detail::check_particle_set(s, describe_input_step(in, step));
   return step;
 }
