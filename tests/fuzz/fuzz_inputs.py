@@ -362,11 +362,9 @@ def run_case(options, run, inputs, files, kind, n):
     else:
         key, (form, make) = path_case(options, n)
         shutil.copyfile(os.path.join(options.source, "apps", "sod", "sod_1d.par"), os.path.join(folder, "case.par"))
-        with open(os.path.join(folder, "case.par"), "ab") as case_file:
-            case_file.write(b"particles = 40\n")  # the last value of a key wins
         path = make(folder)
         given = ["--trace", path] if key == "--trace" else ["--set", key + "=" + path]
-        arguments = [options.sod, "case.par"] + bounded + given
+        arguments = [options.sod, "case.par", "--set", "particles=40"] + bounded + given
         protected.append(os.path.join(folder, "case.par"))
         what = "%s = %s" % (key, form)
         # A run may legitimately write the earlier output only when output_file names it.
@@ -374,6 +372,8 @@ def run_case(options, run, inputs, files, kind, n):
             protected.remove(output)
     kept = snapshot(protected)
     status, error = run.run(arguments, folder)
+    if status == 0:
+        kept.pop(output, None)  # a successful run replaces the earlier output of its name
     if kind == "paths" and key == "output_file" and status != 0 and os.path.isfile(output):
         # refused or failed: the earlier output must then be intact too
         kept[output] = open(inputs["reference"], "rb").read()
