@@ -240,20 +240,11 @@ void report(bns_run& s) {
   log::info() << line.str();
 }
 
-std::vector<double> bounds(const runtime::options& opts, const std::string& name) {
-  std::vector<double> values;
-  std::istringstream in(opts.get(name));
-  for (std::string item; std::getline(in, item, ',');) values.push_back(std::stod(item));
-  if (values.size() != 2)
-    throw runtime::parameter_error("--" + name + " takes two bounds A,B, not '" + opts.get(name) + "'");
-  return values;
-}
-
 /// --check-equilibrium D,R (single star) and --check-orbit S,L (binary): exit status 1 when exceeded.
-int check(const bns_run& s, const runtime::options& opts) {
+int check(const bns_run& s, const app::check_values& checks) {
   bool pass = true;
-  if (opts.has("check-equilibrium")) {
-    const auto b = bounds(opts, "check-equilibrium");
+  if (checks.has("check-equilibrium")) {
+    const auto& b = checks.bounds("check-equilibrium");
     const bool ok =
       s.monitoring && s.first_density_error <= b[0] && s.last_density_error <= b[0] && s.largest_radius_drift <= b[1];
     if (!ok)
@@ -261,8 +252,8 @@ int check(const bns_run& s, const runtime::options& opts) {
                    << " (bound " << b[0] << "), radius drift " << s.largest_radius_drift << " (bound " << b[1] << ")";
     pass = pass && ok;
   }
-  if (opts.has("check-orbit")) {
-    const auto b = bounds(opts, "check-orbit");
+  if (checks.has("check-orbit")) {
+    const auto& b = checks.bounds("check-orbit");
     const bool ok = s.monitoring && s.largest_separation_drift <= b[0] && s.largest_lz_drift <= b[1];
     if (!ok)
       log::error() << "bns: check failed: separation drift " << s.largest_separation_drift << " (bound " << b[0]
@@ -327,7 +318,7 @@ int run(const app::run_context& context) {
     .after("conserved_quantities");
   m.action("initialize", "monitor", monitor).after("diagnostics");
   m.action("finalize", "report", report);
-  return context.execute(m, s, [&context](const bns_run& state) { return check(state, context.options()); });
+  return context.execute(m, s, [&context](const bns_run& state) { return check(state, context.checks()); });
 }
 }  // namespace
 
@@ -347,13 +338,14 @@ int main(int argc, char** argv) {
   definition.file_defaults.output_file = "bns.h5part";
   definition.file_defaults.output_every = 1;
   definition.file_defaults.checkpoint_file = "bns.checkpoint.h5part";
-  definition.declare_options = [](runtime::options& options) {
-    options.value("check-equilibrium", "D,R",
-                  "single star: exit 1 unless the mean density error inside 0.9 R stays within D (at the start and "
-                  "the end) and the half-mass and 90% radii within R of their values after the relaxation");
-    options.value("check-orbit", "S,L",
-                  "binary: exit 1 unless the separation stays within S and Lz within L of their values at release");
-  };
+  definition.checks = {
+    {"check-equilibrium",
+     {"D", "R"},
+     "single star: exit 1 unless the mean density error inside 0.9 R stays within D (at the start and the end) and "
+     "the half-mass and 90% radii within R of their values after the relaxation"},
+    {"check-orbit",
+     {"S", "L"},
+     "binary: exit 1 unless the separation stays within S and Lz within L of their values at release"}};
   definition.run = [](const app::run_context& context) { return run(context); };
   return sph::app_main(argc, argv, definition);
 }

@@ -64,9 +64,9 @@ void report(cold_collapse_run& s) {
 }
 
 /// Exit status 1 when --check-radius TOL fails.
-int check(const cold_collapse_run& s, const runtime::options& opts) {
-  if (!opts.has("check-radius")) return 0;
-  const double bound = std::stod(opts.get("check-radius"));
+int check(const cold_collapse_run& s, const app::check_values& checks) {
+  if (!checks.has("check-radius")) return 0;
+  const double bound = checks.bound("check-radius");
   const bool reached = s.last_time >= s.problem.compare_until * s.free_fall_time * (1 - 1e-12) ||
                        s.time >= s.problem.compare_until * s.free_fall_time;
   const bool pass = reached && s.largest_error <= bound;
@@ -105,7 +105,7 @@ int run(const app::run_context& context) {
     .after("diagnostics");
   m.action("analyze", "radius_check", compare_radius).after("conserved_quantities");
   m.action("finalize", "report", report);
-  return context.execute(m, s, [&context](const cold_collapse_run& state) { return check(state, context.options()); });
+  return context.execute(m, s, [&context](const cold_collapse_run& state) { return check(state, context.checks()); });
 }
 }  // namespace
 
@@ -130,10 +130,8 @@ int main(int argc, char** argv) {
   definition.file_defaults.output_file = "cold_collapse.h5part";
   definition.file_defaults.output_every = 0.1;
   definition.file_defaults.checkpoint_file = "cold_collapse.checkpoint.h5part";
-  definition.declare_options = [](runtime::options& options) {
-    options.value("check-radius", "TOL",
-                  "exit with status 1 if |r / r_free_fall - 1| exceeds TOL up to compare_until t_ff");
-  };
+  definition.checks = {
+    {"check-radius", {"TOL"}, "exit with status 1 if |r / r_free_fall - 1| exceeds TOL up to compare_until t_ff"}};
   definition.run = [](const app::run_context& context) { return run(context); };
   return sph::app_main(argc, argv, definition);
 }

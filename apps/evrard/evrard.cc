@@ -50,9 +50,9 @@ void report(evrard_run& s) {
 }
 
 /// Exit status 1 when --check-energy TOL fails.
-int check(const evrard_run& s, const runtime::options& opts) {
-  if (!opts.has("check-energy")) return 0;
-  const double bound = std::stod(opts.get("check-energy"));
+int check(const evrard_run& s, const app::check_values& checks) {
+  if (!checks.has("check-energy")) return 0;
+  const double bound = checks.bound("check-energy");
   const bool pass = s.largest_energy_error <= bound;
   if (!pass)
     log::error() << "evrard: check failed: |E - E0| / |E0| reached " << s.largest_energy_error
@@ -76,7 +76,7 @@ int run(const app::run_context& context) {
      [](evrard_run& state) { evrard::create_sphere(state, state.problem, state.gravitational_constant); }});
   m.action("analyze", "energy_check", track_energy).after("conserved_quantities");
   m.action("finalize", "report", report);
-  return context.execute(m, s, [&context](const evrard_run& state) { return check(state, context.options()); });
+  return context.execute(m, s, [&context](const evrard_run& state) { return check(state, context.checks()); });
 }
 }  // namespace
 
@@ -99,9 +99,7 @@ int main(int argc, char** argv) {
   definition.file_defaults.output_file = "evrard.h5part";
   definition.file_defaults.output_every = 0.1;
   definition.file_defaults.checkpoint_file = "evrard.checkpoint.h5part";
-  definition.declare_options = [](runtime::options& options) {
-    options.value("check-energy", "TOL", "exit with status 1 if |E - E0| / |E0| exceeds TOL at any step");
-  };
+  definition.checks = {{"check-energy", {"TOL"}, "exit with status 1 if |E - E0| / |E0| exceeds TOL at any step"}};
   definition.run = [](const app::run_context& context) { return run(context); };
   return sph::app_main(argc, argv, definition);
 }

@@ -357,30 +357,16 @@ void report(fluid_run<D>& s) {
         << row.channel_error << "\n";
 }
 
-std::vector<double> numbers(const std::string& text) {
-  std::vector<double> values;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) values.push_back(std::stod(item));
-  return values;
-}
-
-std::vector<double> bounds(const runtime::options& opts, const std::string& name, std::size_t count) {
-  const auto values = numbers(opts.get(name));
-  if (values.size() != count)
-    throw std::invalid_argument("--" + name + " takes " + std::to_string(count) + " comma-separated numbers");
-  return values;
-}
-
 template<int D>
-int check(const fluid_run<D>& s, const runtime::options& opts) {
+int check(const fluid_run<D>& s, const app::check_values& checks) {
   bool pass = true;
   const auto fail = [&](const std::string& what) {
     log::error() << s.program << ": check failed: " << what;
     pass = false;
   };
   const double g = std::fabs(s.fluid.body_force[1]);
-  if (opts.has("check-still-tank")) {
-    const auto b = bounds(opts, "check-still-tank", 2);
+  if (checks.has("check-still-tank")) {
+    const auto& b = checks.bounds("check-still-tank");
     const double speed = s.series.back().speed / std::sqrt(g * s.problem.length);
     const double pressure = s.bottom_pressure / (s.fluid.eos.reference_density * g * s.problem.length);
     if (!(speed <= b[0])) fail("largest speed " + std::to_string(speed) + " sqrt(g H) above " + std::to_string(b[0]));
@@ -389,8 +375,8 @@ int check(const fluid_run<D>& s, const runtime::options& opts) {
     if (!(s.min_x >= l.tank_lo[0] && s.max_x <= l.tank_hi[0] && s.min_y >= l.tank_lo[1]))
       fail("a fluid particle crossed a wall");
   }
-  if (opts.has("check-channel")) {
-    const auto b = bounds(opts, "check-channel", 2);  // steady, transient
+  if (checks.has("check-channel")) {
+    const auto& b = checks.bounds("check-channel");  // steady, transient
     if (s.channel_errors.empty()) fail("no channel error was measured");
     for (std::size_t i = 0; i < s.channel_errors.size(); ++i) {
       const bool last = i + 1 == s.channel_errors.size();
@@ -399,8 +385,8 @@ int check(const fluid_run<D>& s, const runtime::options& opts) {
              " v_max at t = " + std::to_string(s.channel_errors[i].first));
     }
   }
-  if (opts.has("check-dam-break")) {
-    const auto b = bounds(opts, "check-dam-break", 3);  // front, density, energy rise
+  if (checks.has("check-dam-break")) {
+    const auto& b = checks.bounds("check-dam-break");  // front, density, energy rise
     const auto r = dam_break_errors(s);
     if (r.points == 0 || !(r.mean_error <= b[0])) fail("mean front error " + std::to_string(r.mean_error));
     if (!(largest_density_deviation(s) <= b[1]))
@@ -463,7 +449,7 @@ int run(const app::run_context& context) {
   m.action("initialize", "gauges", open_gauges<D>).after("measure");
   m.action("analyze", "gauges", write_gauges<D>).after("measure");
   m.action("finalize", "report", report<D>);
-  return context.execute(m, s, [&context](const fluid_run<D>& state) { return check(state, context.options()); });
+  return context.execute(m, s, [&context](const fluid_run<D>& state) { return check(state, context.checks()); });
 }
 }  // namespace
 
@@ -485,13 +471,12 @@ int main(int argc, char** argv) {
   definition.file_defaults.output_file = "fluid.h5part";
   definition.file_defaults.output_every = 0.1;
   definition.file_defaults.checkpoint_file = "none";
-  definition.declare_options = [](runtime::options& options) {
-    options
-      .value("check-still-tank", "V,P", "exit 1 unless max speed <= V sqrt(g H) and |P_bottom / rho0 g H - 1| <= P")
-      .value("check-channel", "STEADY,TRANSIENT", "exit 1 unless max |v - v_exact| / v_max is within the bounds")
-      .value("check-dam-break", "FRONT,RHO,RISE",
-             "exit 1 unless the mean front error, max |rho/rho0 - 1| and the energy rise / |E0| are within them");
-  };
+  definition.checks = {
+    {"check-still-tank", {"V", "P"}, "exit 1 unless max speed <= V sqrt(g H) and |P_bottom / rho0 g H - 1| <= P"},
+    {"check-channel", {"STEADY", "TRANSIENT"}, "exit 1 unless max |v - v_exact| / v_max is within the bounds"},
+    {"check-dam-break",
+     {"FRONT", "RHO", "RISE"},
+     "exit 1 unless the mean front error, max |rho/rho0 - 1| and the energy rise / |E0| are within them"}};
   definition.run = [](const app::run_context& context) {
     return context.parameters().get<int>("dimension") == 3 ? run<3>(context) : run<2>(context);
   };

@@ -105,22 +105,6 @@ control::control_model<simulation> make_control_model() {
   m.action("finalize", "report", report);
   return m;
 }
-
-/// The TOL of --check TOL (-1 without it); a bad number is a parameter_error (exit status 2).
-double check_tolerance(const runtime::options& opts) {
-  if (!opts.has("check")) return -1;
-  const std::string text = opts.get("check");
-  std::size_t used = 0;
-  double tolerance = -1;
-  try {
-    tolerance = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !(tolerance >= 0))
-    throw runtime::parameter_error("heat: --check takes a tolerance >= 0, not '" + text + "'");
-  return tolerance;
-}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -130,11 +114,10 @@ int main(int argc, char** argv) {
   heat.declare_parameters = [](runtime::parameter_schema& schema) { heat_parameters().declare(schema); };
   // The options of the first versions, each the --set of its key.
   heat.option_keys = {{"cells", "cells"}, {"kappa", "kappa"}, {"time", "end_time"}, {"analyze-every", "analyze_every"}};
-  heat.declare_options = [](runtime::options& options) {
-    options.value("check", "TOL", "exit with status 1 if the final max error exceeds TOL or the heat drifts");
-  };
+  // Parsed by the frame at start-up: a bad TOL is exit status 2 before anything runs.
+  heat.checks = {{"check", {"TOL"}, "exit with status 1 if the final max error exceeds TOL or the heat drifts"}};
   heat.run = [](const app::run_context& context) {
-    const double tolerance = check_tolerance(context.options());
+    const double tolerance = context.checks().has("check") ? context.checks().bound("check") : -1;
     simulation s;
     static_cast<heat_settings&>(s) = heat_parameters().read(context.parameters());
     return context.execute(make_control_model(), s, [tolerance](const simulation& state) {

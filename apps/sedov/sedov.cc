@@ -42,13 +42,9 @@ void report(sedov_run<D>& s) {
 
 /// Exit status 1 when --check DR,DE fails.
 template<int D>
-int check(const sedov_run<D>& s, const runtime::options& opts) {
-  if (!opts.has("check")) return 0;
-  std::stringstream bounds(opts.get("check"));
-  double radius_bound = 0, energy_bound = 0;
-  char comma = 0;
-  if (!(bounds >> radius_bound >> comma >> energy_bound) || comma != ',')
-    throw std::invalid_argument("--check takes two numbers: radius,energy");
+int check(const sedov_run<D>& s, const app::check_values& checks) {
+  if (!checks.has("check")) return 0;
+  const double radius_bound = checks.bounds("check")[0], energy_bound = checks.bounds("check")[1];
   const double energy = std::fabs(s.totals.total - s.initial_totals.total) / s.initial_totals.total;
   const bool pass = std::fabs(s.blast.relative_error()) <= radius_bound && energy <= energy_bound;
   if (!pass)
@@ -68,7 +64,7 @@ int run(const app::run_context& context) {
     {[](sedov_run<D>& state) { sedov::set_periodic_box(state, state.problem); },
      [](sedov_run<D>& state) { sedov::create_lattice(state, state.problem); }});
   m.action("finalize", "report", report<D>);
-  return context.execute(m, s, [&context](const sedov_run<D>& state) { return check(state, context.options()); });
+  return context.execute(m, s, [&context](const sedov_run<D>& state) { return check(state, context.checks()); });
 }
 }  // namespace
 
@@ -89,9 +85,8 @@ int main(int argc, char** argv) {
   definition.file_defaults.output_file = "sedov.h5part";
   definition.file_defaults.output_every = 0.01;
   definition.file_defaults.checkpoint_file = "sedov.checkpoint.h5part";
-  definition.declare_options = [](runtime::options& options) {
-    options.value("check", "DR,DE", "exit with status 1 unless |shock radius error| <= DR and |energy change|/E <= DE");
-  };
+  definition.checks = {
+    {"check", {"DR", "DE"}, "exit with status 1 unless |shock radius error| <= DR and |energy change|/E <= DE"}};
   definition.run = [](const app::run_context& context) {
     const auto& p = context.parameters();
     return p.get<int>("dimension") == 2 ? run<2>(context) : run<3>(context);

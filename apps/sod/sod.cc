@@ -41,21 +41,12 @@ void report(sod_run<D>& s) {
   log::info() << "sod: conserved at t = " << s.time << ": " << sph::describe_conserved(s.totals, s.initial_totals);
 }
 
-/// "a,b,c" -> three numbers.
-std::vector<double> numbers(const std::string& text) {
-  std::vector<double> values;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');) values.push_back(std::stod(item));
-  return values;
-}
-
-/// Exit status 1 when a requested check fails.
+/// Exit status 1 when a requested check fails (bounds parsed at start-up by the frame).
 template<int D>
-int check(const sod_run<D>& s, const runtime::options& opts) {
+int check(const sod_run<D>& s, const app::check_values& checks) {
   bool pass = true;
-  if (opts.has("check-l1")) {
-    const auto bounds = numbers(opts.get("check-l1"));
-    if (bounds.size() != 3) throw std::invalid_argument("--check-l1 takes three numbers: density,pressure,velocity");
+  if (checks.has("check-l1")) {
+    const auto& bounds = checks.bounds("check-l1");
     const bool ok =
       s.errors.count > 0 && s.errors.rho <= bounds[0] && s.errors.P <= bounds[1] && s.errors.v <= bounds[2];
     if (!ok)
@@ -63,9 +54,8 @@ int check(const sod_run<D>& s, const runtime::options& opts) {
                    << ") exceed (" << bounds[0] << ", " << bounds[1] << ", " << bounds[2] << ")";
     pass = pass && ok;
   }
-  if (opts.has("check-conservation")) {
-    const auto bounds = numbers(opts.get("check-conservation"));
-    if (bounds.size() != 2) throw std::invalid_argument("--check-conservation takes two numbers: momentum,energy");
+  if (checks.has("check-conservation")) {
+    const auto& bounds = checks.bounds("check-conservation");
     const double momentum = std::fabs(s.totals.momentum[0] - s.initial_totals.momentum[0]);
     const double energy = std::fabs(s.totals.total - s.initial_totals.total) / std::fabs(s.initial_totals.total);
     const bool mass = s.totals.mass == s.initial_totals.mass;
@@ -92,7 +82,7 @@ int run(const app::run_context& context) {
     sph::make_app_control_model<sod_run<D>>({[](sod_run<D>& state) { sod::set_tube_domain(state, state.problem); },
                                              [](sod_run<D>& state) { sod::create_tube(state, state.problem); }});
   m.action("finalize", "report", report<D>);
-  return context.execute(m, s, [&context](const sod_run<D>& state) { return check(state, context.options()); });
+  return context.execute(m, s, [&context](const sod_run<D>& state) { return check(state, context.checks()); });
 }
 }  // namespace
 
@@ -109,11 +99,11 @@ int main(int argc, char** argv) {
   definition.file_defaults.output_file = "sod.h5part";
   definition.file_defaults.output_every = 0.05;
   definition.file_defaults.checkpoint_file = "sod.checkpoint.h5part";
-  definition.declare_options = [](runtime::options& options) {
-    options.value("check-l1", "RHO,P,V", "exit with status 1 if an L1 error exceeds its bound")
-      .value("check-conservation", "DP,DE",
-             "exit with status 1 unless mass is exact, |momentum change| <= DP and |energy change|/E <= DE");
-  };
+  definition.checks = {
+    {"check-l1", {"RHO", "P", "V"}, "exit with status 1 if an L1 error exceeds its bound"},
+    {"check-conservation",
+     {"DP", "DE"},
+     "exit with status 1 unless mass is exact, |momentum change| <= DP and |energy change|/E <= DE"}};
   definition.run = [](const app::run_context& context) {
     const auto& p = context.parameters();
     const int dimension = p.get<int>("dimension");

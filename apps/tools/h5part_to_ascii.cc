@@ -4,6 +4,7 @@
 //   h5part_to_ascii run.h5part > last.dat              # last step, default columns
 //   h5part_to_ascii --step 12 --columns x,rho,P run.h5part --output step12.dat
 //   h5part_to_ascii --list run.h5part                  # steps, times and datasets
+#include "flecsi_lite/app.hh"
 #include "flecsi_lite/io.hh"
 #include "flecsi_lite/runtime.hh"
 
@@ -74,6 +75,12 @@ int run(int argc, char** argv) {
   if (options.has("help")) {
     std::cout << options.help("h5part_to_ascii");
     return 0;
+  }
+  // The export never replaces its own input (also through a link or its temporary name).
+  if (options.has("output") && app::names_same_file(options.get("output"), options.get("file"))) {
+    std::cerr << "h5part_to_ascii: --output '" << options.get("output") << "' is the input file '"
+              << options.get("file") << "': it would be replaced by its text; give another --output\n";
+    return 2;
   }
   try {
     io::h5part_reader reader(options.get("file"), MPI_COMM_SELF);

@@ -24,6 +24,13 @@ struct named_file {
   const std::string& path;
 };
 
+// A file opened with MPI-IO (under its temporary name when written): checked at start-up, not
+// found when the first checkpoint is written after hours.
+void require_mpi_io_name(const char* key, const std::string& path) {
+  if (const std::string problem = io::mpi_io_name_problem(path); !problem.empty())
+    throw parameter_error(std::string(key) + ": " + problem);
+}
+
 // A file the run writes: it can be created where it is named, and what is there now may be replaced.
 void require_writable(const named_file& file) {
   if (file.path.empty()) return;
@@ -34,6 +41,7 @@ void require_writable(const named_file& file) {
   const std::string reason = io::unwritable_folder_reason(file.path);
   if (!reason.empty())
     throw parameter_error(std::string(file.key) + " = '" + file.path + "' cannot be written: " + reason);
+  require_mpi_io_name(file.key, file.path + ".partial");
 }
 
 // Two keys naming one file (names_same_file).
@@ -48,7 +56,10 @@ void require_distinct(const named_file& written, const named_file& other) {
 bool names_same_file(const std::string& a, const std::string& b) {
   if (a.empty() || b.empty()) return false;
   const std::string x = normalized(a), y = normalized(b);
-  return x == y || x == y + ".partial" || y == x + ".partial";
+  if (x == y || x == y + ".partial" || y == x + ".partial") return true;
+  // Two names of one existing file (a hard link, or a link the resolution above did not see).
+  std::error_code error;
+  return std::filesystem::equivalent(a, b, error) && !error;
 }
 
 runtime::parameter_block<file_settings> file_parameters(const file_settings& defaults) {
@@ -80,6 +91,8 @@ runtime::parameter_block<file_settings> file_parameters(const file_settings& def
     require_distinct(output, restart);
     require_distinct(output, initial);
     require_distinct(checkpoint, initial);
+    for (const named_file& read : {restart, initial})
+      if (!read.path.empty()) require_mpi_io_name(read.key, read.path);
     // checkpoint_file = restart_file is allowed: the checkpoint is read whole at start-up, and a
     // new one replaces it only by an atomic rename once complete (a run continued in chunks).
     if (!f.restart_file.empty() && !f.initial_data.empty())

@@ -30,8 +30,9 @@ struct file_settings {
 runtime::parameter_block<file_settings> file_parameters(const file_settings& defaults = {});
 
 /// Whether two non-empty paths name one file, or one names the other's temporary `<path>.partial`
-/// (compared as resolved paths: "./a.h5part" and "a.h5part" are one file): writing one would
-/// replace or corrupt the other. Every collision check of the frame's file keys uses it.
+/// (compared as resolved paths: "./a.h5part" and "a.h5part" are one file; two existing names
+/// of one file, hard links included, are one file): writing one would replace or corrupt the
+/// other. Every collision check of the frame's file keys uses it.
 bool names_same_file(const std::string& a, const std::string& b);
 
 }  // namespace flecsi_lite::app

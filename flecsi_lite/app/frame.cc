@@ -12,8 +12,11 @@
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/runtime/log.hh"
 
+#include <algorithm>
+#include <cctype>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -39,8 +42,22 @@ void check_distinct_file(const std::string& key, const std::string& path,
                          const std::vector<std::pair<std::string, std::string>>& others) {
   for (const auto& [other_key, other] : others)
     if (names_same_file(path, other))
-      throw runtime::parameter_error(key + " '" + path + "' is also " + other_key + ": set " + key +
+      throw runtime::parameter_error(key + " '" + path + "' is also " + other_key + " '" + other + "': set " + key +
                                      " to another name (or none)");
+}
+
+void require_distinct_files(const std::vector<named_path>& files) {
+  std::vector<std::pair<std::string, std::string>> earlier;
+  for (const auto& file : files) {
+    std::vector<std::pair<std::string, std::string>> others;
+    for (const auto& [key, path] : earlier)
+      // A run continued in chunks writes its checkpoint over the one it started from, atomically.
+      if (!(file.key == "checkpoint_file" && key == "restart_file") &&
+          !(file.key == "restart_file" && key == "checkpoint_file"))
+        others.emplace_back(key, path);
+    check_distinct_file(file.key, file.path, others);
+    earlier.emplace_back(file.key, file.path);
+  }
 }
 
 namespace {
@@ -83,40 +100,88 @@ void print_banner(const definition& app) {
               << " MPI ranks x " << concurrency() << " threads per rank";
 }
 
-/// Where the used parameters go ("" for nowhere); a path that another file key names too is a
-/// parameter error, since one of the two files would overwrite the other.
-std::string used_parameters_path(const definition& app, const runtime::parameters& p) {
-  const file_settings files = file_parameters(*app.files).read(p);
-  const std::string path = used_parameters_file(app.program, p);
-  check_distinct_file("used_parameters_file", path,
-                      {{"output_file", files.output_file},
-                       {"checkpoint_file", files.checkpoint_file},
-                       {"restart_file", files.restart_file},
-                       {"initial_data", files.initial_data}});
-  return path;
+/// The text of the used-parameters file of a run of `app` with `p`.
+std::string used_parameters_text(const definition& app, const std::string& path, const runtime::parameters& p) {
+  std::ostringstream text;
+  text << "# " << app.program << " " << version() << " (git " << git_describe()
+       << "): every parameter of a run, defaults included; rerun with `" << app.program << " " << path << "`\n"
+       << p.resolved_text();
+  return text.str();
 }
 
-/// The stop file is removed when found: it must not be one of the run's files.
+/// The assignments of a parameter text, without comments, blanks and empty lines.
+std::vector<std::string> assignments_of(std::istream& text) {
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(text, line);) {
+    line = line.substr(0, line.find('#'));
+    line.erase(std::remove_if(line.begin(), line.end(), [](unsigned char c) { return std::isspace(c); }), line.end());
+    if (!line.empty()) lines.push_back(line);
+  }
+  return lines;
+}
+
+/// Where the used parameters go ("" for nowhere). The rerun of a used-parameters file
+/// (`sod sod.used.par`) names it as both the parameter file and its own used-parameters file:
+/// it is left as it is when it holds this run's parameters already, else that is refused.
+std::string used_parameters_path(const definition& app, const runtime::parameters& p,
+                                 const std::string& parameter_file) {
+  const std::string path = used_parameters_file(app.program, p);
+  if (path.empty() || !names_same_file(path, parameter_file)) return path;
+  std::ifstream in(parameter_file);
+  std::istringstream resolved(p.resolved_text());
+  if (assignments_of(in) == assignments_of(resolved)) return "";
+  throw runtime::parameter_error("used_parameters_file '" + path + "' is also the parameter file '" + parameter_file +
+                                 "', and this run's parameters are not the ones it holds: writing them would change "
+                                 "the parameter file; set used_parameters_file to another name (or none)");
+}
+
+/// Every file the run reads or writes, in the order whose later key require_distinct_files names
+/// first: the parameter file, the file keys, the used-parameters file, the app's, the stop file
+/// (removed when found) and the --trace file.
+std::vector<named_path> run_files(const definition& app, const runtime::parameters& p,
+                                  const runtime::options& options) {
+  std::vector<named_path> files{{"the parameter file", options.get("parameters")}};
+  if (app.files) {
+    const file_settings keys = file_parameters(*app.files).read(p);
+    files.insert(files.end(), std::initializer_list<named_path>{
+                                {"output_file", keys.output_file},
+                                {"checkpoint_file", keys.checkpoint_file},
+                                {"restart_file", keys.restart_file},
+                                {"initial_data", keys.initial_data},
+                                {"used_parameters_file", used_parameters_path(app, p, files.front().path)}});
+  }
+  if (app.other_files)
+    for (const auto& [key, path] : app.other_files(p)) files.push_back({key, path});
+  if (app.files) {
+    const file_settings keys = file_parameters(*app.files).read(p);
+    files.push_back({"stop_file", resolved_stop_file(run_limit_parameters().read(p), keys.output_file, app.program)});
+  }
+  files.push_back({"--trace", options.get("trace")});
+  return files;
+}
+
+/// The stop file is removed when found, so it may be nothing but a regular file (or absent).
 void check_stop_file(const definition& app, const runtime::parameters& p) {
   const file_settings files = file_parameters(*app.files).read(p);
-  check_distinct_file("stop_file", resolved_stop_file(run_limit_parameters().read(p), files.output_file, app.program),
-                      {{"output_file", files.output_file},
-                       {"checkpoint_file", files.checkpoint_file},
-                       {"restart_file", files.restart_file},
-                       {"initial_data", files.initial_data},
-                       {"used_parameters_file", used_parameters_file(app.program, p)}});
+  const std::string path = resolved_stop_file(run_limit_parameters().read(p), files.output_file, app.program);
+  if (const std::string kind = path.empty() ? "" : io::non_regular_kind(path); !kind.empty())
+    throw runtime::parameter_error("stop_file = '" + path + "' is " + kind +
+                                   ", not a regular file: the run removes the stop file it finds; choose another path");
 }
 
-/// Rank 0 writes the file (io::write_text_file: never over anything but a regular file); every
-/// rank throws the same io_error when that fails. Collective.
+/// Rank 0 writes the file aside as `<path>.partial` (io::write_text_file_aside: never over
+/// anything but a regular file); every rank throws the same io_error when that fails. Collective.
 void write_used_parameters(const definition& app, const std::string& path, const runtime::parameters& p) {
   io::agree(runtime::communicator(), [&] {
     if (runtime::rank() != 0) return;
-    std::ostringstream text;
-    text << "# " << app.program << " " << version() << " (git " << git_describe()
-         << "): every parameter of a run, defaults included; rerun with `" << app.program << " " << path << "`\n"
-         << p.resolved_text();
-    io::write_text_file(path, text.str(), "used_parameters_file");
+    io::write_text_file_aside(path, used_parameters_text(app, path, p), "used_parameters_file");
+  });
+}
+
+/// Once the run succeeded: the used-parameters file replaces an earlier one. Collective.
+void commit_used_parameters(const definition& app, const std::string& path) {
+  io::agree(runtime::communicator(), [&] {
+    if (runtime::rank() == 0) io::commit_text_file(path, "used_parameters_file");
   });
   log::info() << app.program << ": parameters of this run in " << path;
 }
@@ -147,6 +212,7 @@ int main(int argc, char** argv, const definition& app) {
                   key->required() ? "" : runtime::parameter_declaration::format(*key->fallback()));
   }
   if (app.declare_options) app.declare_options(options);
+  declare_checks(app.checks, options);
 
   runtime::runtime rt(argc, argv, options);
   if (!rt.proceed()) return rt.exit_code();
@@ -155,12 +221,20 @@ int main(int argc, char** argv, const definition& app) {
     return 0;
   }
   try {
+    const check_values checks = parse_checks(app.checks, rt.opts());
     const auto p = runtime::parameters::load(schema, rt.opts().get("parameters"), overrides_of(app, rt.opts()));
+    require_distinct_files(run_files(app, p, rt.opts()));
     print_banner(app);
-    if (app.files) check_stop_file(app, p);
-    if (app.files && !run_context::control_model_only())
-      if (const std::string path = used_parameters_path(app, p); !path.empty()) write_used_parameters(app, path, p);
-    return app.run(run_context(app, p, rt.opts()));
+    std::string used_parameters;
+    if (app.files) {
+      check_stop_file(app, p);
+      if (!run_context::control_model_only())
+        used_parameters = used_parameters_path(app, p, rt.opts().get("parameters"));
+    }
+    if (!used_parameters.empty()) write_used_parameters(app, used_parameters, p);
+    const int status = app.run(run_context(app, p, rt.opts(), checks));
+    if (status == 0 && !used_parameters.empty()) commit_used_parameters(app, used_parameters);
+    return status;
   } catch (const runtime::parameter_error& e) {
     log::error() << e.what();
     return 2;

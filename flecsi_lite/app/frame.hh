@@ -11,15 +11,20 @@
 //   };
 //   int main(int argc, char** argv) { return app::main(argc, argv, heat); }
 //
-// At start-up, rank 0 prints a banner (program, version, git commit, ranks, threads per rank),
-// and apps with files write the used-parameters file: every key with its value, defaults
-// included, a complete rerun file (key used_parameters_file; "auto": `<output stem>.used.par`).
+// At start-up, before anything runs, the app's checks are parsed (check_options.hh) and every
+// file the run reads or writes (the parameter file, the file keys, the used-parameters and stop
+// files, --trace, the app's own) must be a different file (require_distinct_files); rank 0 prints
+// a banner (program, version, git commit, ranks, threads per rank), and apps with files write the
+// used-parameters file: every key with its value, defaults included, a complete rerun file (key
+// used_parameters_file; "auto": `<output stem>.used.par`), as `<file>.partial`, renamed over
+// `<file>` only when the run succeeds (exit status 0), so that a failed run never replaces it.
 //
 // Exit statuses: 0 the run (or --help, --parameters-help, --control-model); 1 a check of the app
 // failed; 2 bad options or parameters; 3 any other error (a bad file, an impossible value), each
 // reported on rank 0 with what was wrong.
 #pragma once
 
+#include "flecsi_lite/app/check_options.hh"
 #include "flecsi_lite/app/file_settings.hh"
 #include "flecsi_lite/control/control_model.hh"
 #include "flecsi_lite/runtime/options.hh"
@@ -53,8 +58,13 @@ struct definition {
   /// With a value, the file keys (file_settings.hh) are declared after the app's, with these defaults.
   std::optional<file_settings> files;
   std::vector<option_key> option_keys;
-  /// The app's own options (e.g. its checks), besides the frame's and the runtime's.
+  /// The app's own options, besides the frame's, the runtime's and the checks.
   std::function<void(runtime::options&)> declare_options;
+  /// The app's checks (check_options.hh), parsed before the run: run_context::checks().
+  std::vector<check_option> checks;
+  /// The files the app reads or writes besides the frame's, as (key, path; empty: none), from
+  /// the loaded parameters: they take part in require_distinct_files.
+  std::function<std::vector<std::pair<std::string, std::string>>(const runtime::parameters&)> other_files;
   /// The run, once the parameters are loaded; returns the exit status.
   std::function<int(const run_context&)> run;
 };
@@ -62,12 +72,15 @@ struct definition {
 /// What a run sees: the resolved parameters and the options.
 class run_context {
  public:
-  run_context(const definition& app, const runtime::parameters& parameters, const runtime::options& options)
-      : app_(app), parameters_(parameters), options_(options) {}
+  run_context(const definition& app, const runtime::parameters& parameters, const runtime::options& options,
+              const check_values& checks = {})
+      : app_(app), parameters_(parameters), options_(options), checks_(checks) {}
 
   const std::string& program() const { return app_.program; }
   const runtime::parameters& parameters() const { return parameters_; }
   const runtime::options& options() const { return options_; }
+  /// The app's checks given on the command line, parsed at start-up.
+  const check_values& checks() const { return checks_; }
 
   /// True under --control-model: the model is written, nothing runs and nothing is checked.
   static bool control_model_only() { return !runtime::current_settings().control_model_file.empty(); }
@@ -105,6 +118,7 @@ class run_context {
   const definition& app_;
   const runtime::parameters& parameters_;
   const runtime::options& options_;
+  check_values checks_;
 };
 
 /// The version of this build (PROJECT_VERSION) and its commit, as `git describe --always --dirty`
@@ -125,6 +139,18 @@ std::string used_parameters_file(const std::string& program, const runtime::para
 /// with one name would be lost.
 void check_distinct_file(const std::string& key, const std::string& path,
                          const std::vector<std::pair<std::string, std::string>>& others);
+
+/// One file of a run under the key (or option) that names it: "output_file", "--trace", ...
+struct named_path {
+  std::string key;
+  std::string path;  ///< empty: none
+};
+
+/// Every file a run reads or writes, in the order of `files`: throws parameter_error naming both
+/// keys (check_distinct_file's message, the later key first) when two of them are one file
+/// (names_same_file: also through links, or one the other's `.partial`). checkpoint_file may be
+/// restart_file (a checkpoint replaces the one it continues only once complete).
+void require_distinct_files(const std::vector<named_path>& files);
 
 /// The schema of `app`: its keys, then the file keys and used_parameters_file when it has files.
 runtime::parameter_schema schema_of(const definition& app);

@@ -41,9 +41,15 @@ std::string stop_monitor::check() const {
       std::ostringstream text;
       text << "wall_time_limit = " << wall_time_limit_ << " s reached (" << elapsed << " s)";
       reason = text.str();
-    } else if (!stop_file_.empty() && std::filesystem::exists(std::filesystem::symlink_status(stop_file_, error))) {
-      std::filesystem::remove(stop_file_, error);
-      reason = "stop file '" + stop_file_ + "' found" + (error ? "" : " (removed)");
+    } else if (const auto status = std::filesystem::symlink_status(stop_file_, error);
+               !stop_file_.empty() && std::filesystem::exists(status)) {
+      // Only a regular file, the user's `touch`, is removed: never a folder, a device or a link.
+      const bool regular = std::filesystem::is_regular_file(status);
+      if (regular) std::filesystem::remove(stop_file_, error);
+      reason = "stop file '" + stop_file_ + "' found" +
+               (!regular ? " (not removed: not a regular file)"
+                : error  ? ""
+                         : " (removed)");
     }
   }
   int length = static_cast<int>(reason.size());

@@ -29,8 +29,9 @@ class stop_monitor {
   /// The clock runs from now.
   stop_monitor(double wall_time_limit, std::string stop_file);
 
-  /// Why the run must stop now ("" to go on). A stop file found is removed, so that the run
-  /// resumed from the checkpoint does not stop at once. Collective.
+  /// Why the run must stop now ("" to go on). A stop file found is removed when it is a regular
+  /// file (nothing else is ever removed), so that the run resumed from the checkpoint does not
+  /// stop at once. Collective.
   std::string check() const;
   const std::string& stop_file() const { return stop_file_; }
   double wall_time_limit() const { return wall_time_limit_; }

@@ -11,6 +11,9 @@
 #include "flecsi_lite/runtime/timers.hh"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
@@ -55,9 +58,19 @@ executor::executor() : epoch_(std::chrono::steady_clock::now()) {
     }
     if (runtime::current_settings().timers) detail::report_ghost_traffic(traffic_, std::cout);
     if (trace_file.empty()) return;
+    // Written beside and renamed once complete, as every output: a full disk or a crash never
+    // leaves half a trace (or nothing) under the name, and a failure is said.
+    const std::string partial = trace_file + ".partial";
     std::ofstream out;
-    if (runtime::rank() == 0) out.open(trace_file);
+    if (runtime::rank() == 0) out.open(partial, std::ios::trunc);
     write_chrome_trace(trace_, out);
+    if (runtime::rank() != 0) return;
+    out.close();
+    if (!out || std::rename(partial.c_str(), trace_file.c_str()) != 0) {
+      log::error() << "flecsi_lite: the --trace file '" << trace_file << "' was not written: cannot write '" << partial
+                   << "' (" << std::strerror(errno) << ")";
+      std::remove(partial.c_str());
+    }
   });
 }
 

@@ -57,13 +57,15 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how) : path_(
     MPI_Bcast(&append_to_copy, 1, MPI_INT, 0, comm_);
   }
 
+  // The same name and working folder on every rank: the same verdict everywhere.
+  const std::string name = mpi_io_name(partial_path());
   auto access = mpio_file_access(comm_);
   // No modification time on the root group either: identical runs write identical files.
   auto creation = property_list_handle(H5Pcreate(H5P_FILE_CREATE));
   if (!creation || H5Pset_obj_track_times(creation.get(), false) < 0)
     throw io_error(failure::system, "cannot describe '" + partial_path() + "'" + hdf5_reason());
-  const hid_t id = append_to_copy ? H5Fopen(partial_path().c_str(), H5F_ACC_RDWR, access.get())
-                                  : H5Fcreate(partial_path().c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
+  const hid_t id = append_to_copy ? H5Fopen(name.c_str(), H5F_ACC_RDWR, access.get())
+                                  : H5Fcreate(name.c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
   std::optional<failure_record> failed;
   if (id < 0)
     failed = failure_record{failure::file, "cannot " + std::string(append_to_copy ? "open" : "create") + " '" +

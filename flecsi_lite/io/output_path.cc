@@ -68,17 +68,56 @@ void require_writable_folder(const std::string& path, const std::string& role) {
   if (!reason.empty()) throw file_error("cannot write " + named(path, role) + ": " + reason);
 }
 
-void write_text_file(const std::string& path, const std::string& text, const std::string& role) {
+namespace {
+std::string shorter_name(const std::string& path) {
+  if (path.size() <= longest_mpi_io_name) return path;
+  std::error_code error;
+  const std::string relative = std::filesystem::relative(path, error).string();
+  return !error && !relative.empty() && relative.size() < path.size() ? relative : path;
+}
+}  // namespace
+
+std::string mpi_io_name_problem(const std::string& path) {
+  // Open MPI's "sm" component maps `<session folder>/<file name>_cid-<n>-<pid>.sm`: one name of
+  // at most 255 characters.
+  const std::size_t file_name = std::filesystem::path(path).filename().string().size();
+  if (file_name > longest_mpi_io_file_name)
+    return "'" + path + "' has a file name of " + std::to_string(file_name) +
+           " characters: Open MPI's MPI-IO cannot open names longer than " + std::to_string(longest_mpi_io_file_name) +
+           "; choose a shorter name";
+  const std::string name = shorter_name(path);
+  if (name.size() <= longest_mpi_io_name) return "";
+  return "'" + path + "' is " + std::to_string(path.size()) + " characters long (" + std::to_string(name.size()) +
+         " relative to the working folder): Open MPI's MPI-IO aborts on names longer than " +
+         std::to_string(longest_mpi_io_name) + "; choose a shorter path (or run from a folder nearer to it)";
+}
+
+std::string mpi_io_name(const std::string& path, const std::string& role) {
+  if (const std::string problem = mpi_io_name_problem(path); !problem.empty())
+    throw file_error("cannot open " + (role.empty() ? std::string("the file") : "the " + role) + " " + problem);
+  return shorter_name(path);
+}
+
+void write_text_file_aside(const std::string& path, const std::string& text, const std::string& role) {
   const std::string partial = path + ".partial";
   require_replaceable(path, role);
   require_replaceable(partial, "temporary file");
-  {
-    std::ofstream out(partial, std::ios::trunc);
-    out << text;
-    if (!out.flush()) throw file_error("cannot write " + named(partial, "the " + role + " temporary file"));
-  }
+  std::ofstream out(partial, std::ios::trunc);
+  out << text;
+  // close() reports what flush() may not (a full disk seen only when the data reach it).
+  out.close();
+  if (!out) throw file_error("cannot write " + named(partial, "the " + role + " temporary file"));
+}
+
+void commit_text_file(const std::string& path, const std::string& role) {
+  const std::string partial = path + ".partial";
   if (std::rename(partial.c_str(), path.c_str()) != 0)
     throw file_error("cannot rename '" + partial + "' to " + named(path, "the " + role));
+}
+
+void write_text_file(const std::string& path, const std::string& text, const std::string& role) {
+  write_text_file_aside(path, text, role);
+  commit_text_file(path, role);
 }
 
 }  // namespace flecsi_lite::io

@@ -105,9 +105,10 @@ snapshot_writer::snapshot_writer(std::string path, MPI_Comm comm) : path_(std::m
     require_replaceable(path_);
     require_replaceable(partial_path(), "temporary file");
   });
+  const std::string name = mpi_io_name(partial_path());  // the same verdict on every rank
   auto access = mpio_file_access(comm_);
   auto creation = untimed_creation(H5P_FILE_CREATE);
-  const hid_t id = H5Fcreate(partial_path().c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
+  const hid_t id = H5Fcreate(name.c_str(), H5F_ACC_TRUNC, creation.get(), access.get());
   std::optional<failure_record> failed;
   if (id < 0)
     failed = failure_record{failure::file, "cannot create '" + partial_path() + "' for writing" + hdf5_reason()};

@@ -28,7 +28,11 @@ std::vector<std::function<void()>> finalizers;
 std::string unwritable_reason(const std::string& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) return "it is a directory";
-  const bool existed = std::filesystem::exists(path, error);
+  const auto status = std::filesystem::symlink_status(path, error);
+  // Opening a fifo would wait for a reader for ever; a link or a device is never replaced.
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    return "it exists and is not a regular file (a link, fifo, device or socket): it is never replaced";
+  const bool existed = std::filesystem::exists(status);
   std::ofstream out(path, std::ios::app);
   if (!out) return std::strerror(errno);
   out.close();

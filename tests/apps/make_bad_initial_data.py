@@ -10,6 +10,9 @@ Each file is a well-formed H5Part file (Step#0 with TimeValue) of 1-D particles 
   coincident.h5part       particles 4 and 9 at one position
   walls_only.h5part       every particle a wall (kind 1)
   single_particle.h5part  one particle
+  duplicate_ids.h5part    particles 2 and 11 with id 2
+  nan_ids.h5part          ids as float64, NaN for particle 6
+  fractional_ids.h5part   ids as float64, 6.5 for particle 6
 and two that are not usable HDF5 files:
   truncated.h5part        the first half of a valid file
   not_hdf5.h5part         a text file
@@ -52,6 +55,9 @@ write("text_positions.h5part", broken(lambda p: p.__setitem__("x", np.array([b"l
 write("coincident.h5part", broken(lambda p: p["x"].__setitem__(9, p["x"][4])))
 write("walls_only.h5part", broken(lambda p: p.__setitem__("kind", np.ones(COUNT, dtype=np.int32))))
 write("single_particle.h5part", valid_particles(1))
+write("duplicate_ids.h5part", broken(lambda p: p["id"].__setitem__(11, 2)))
+write("nan_ids.h5part", broken(lambda p: (p.__setitem__("id", p["id"].astype(np.float64)), p["id"].__setitem__(6, np.nan))))
+write("fractional_ids.h5part", broken(lambda p: (p.__setitem__("id", p["id"].astype(np.float64)), p["id"].__setitem__(6, 6.5))))
 
 write("valid.h5part", valid_particles(4096))
 with open("valid.h5part", "rb") as source:

@@ -6,6 +6,7 @@
 #include "flecsi_lite/io/detail/hdf5_errors.hh"
 #include "flecsi_lite/io/detail/hdf5_parallel.hh"
 #include "flecsi_lite/io/io_error.hh"
+#include "flecsi_lite/io/output_path.hh"
 
 #include <cerrno>
 #include <cstring>
@@ -36,8 +37,9 @@ hdf5_handle open_for_reading_collectively(const std::string& path, MPI_Comm comm
   agree(comm, [&] {
     if (rank_of(comm) == 0) check_readable_hdf5(path, kind);
   });
+  const std::string name = mpi_io_name(path);  // the same verdict on every rank
   auto access = mpio_file_access(comm);
-  auto file = file_handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()));
+  auto file = file_handle(H5Fopen(name.c_str(), H5F_ACC_RDONLY, access.get()));
   std::optional<failure_record> failed;
   if (!file)
     failed =

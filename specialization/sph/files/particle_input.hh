@@ -9,13 +9,14 @@
 //              kind (0 fluid, 1 wall; default fluid)
 //
 // Impossible values (no particles, non-finite positions, m <= 0, h <= 0, u < 0, rho < 0, unknown
-// kinds: the fields' rules) are errors naming the file, the step, the dataset and the first bad
+// kinds: the fields' rules; ids that are not whole numbers >= 0 or not unique: initial_ids.hh) are errors naming the file, the step, the dataset and the first bad
 // particle, thrown on every rank alike; so are sets of particles SPH cannot evolve: no fluid
 // particle (walls only), two particles at one position (the pair with the smallest ids is named),
 // and a single particle with adaptive h (h = eta (m/rho)^(1/D) has no solution without
 // neighbours; with adaptive_smoothing_length = false it runs: a particle at rest in its box).
 #pragma once
 
+#include "specialization/sph/files/initial_ids.hh"
 #include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
 #include "specialization/sph/step/initial_fields.hh"
@@ -88,6 +89,8 @@ template<int D>
 std::int64_t read_particles(simulation<D>& s, const flecsi_lite::io::h5part_reader& in, std::int64_t step = -1) {
   if (step < 0) step = in.last_step();
   create_particles_for(s, in, step);
+  // Before the fields: a NaN id must not reach the field reader's conversion on one rank only.
+  detail::check_initial_ids(flecsi_lite::io::h5part_step_columns(in, step));
   flecsi_lite::data::read_fields(*s.particles, in, step, flecsi_lite::data::role::initial);
   detail::check_particle_set(s, describe_input_step(in, step));
   return step;

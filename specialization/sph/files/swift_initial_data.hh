@@ -119,6 +119,7 @@ std::uint64_t read_swift_initial_data(simulation<D>& s, const std::string& path,
   detail::check_swift_header<D>(in, units);
   if (in.particle_count() == 0) throw std::invalid_argument(in.where() + " holds no particles");
   create_particles(s, in.block().count);
+  detail::check_initial_ids(in);  // before the fields, as read_particles
   flecsi_lite::data::read_fields(*s.particles, in, flecsi_lite::data::role::initial);
   detail::check_particle_set(s, in.where());
   return in.particle_count();

@@ -17,6 +17,15 @@ flecsi_lite::app::definition frame_definition(const app_definition& app) {
   };
   frame.files = app.file_defaults;
   frame.declare_options = app.declare_options;
+  frame.checks = app.checks;
+  // The statistics file takes part in the frame's rule that a run's files are distinct.
+  frame.other_files = [program = app.program](const flecsi_lite::runtime::parameters& p) {
+    std::string statistics = statistics_parameters().read(p).file;
+    if (statistics == "auto")
+      statistics = flecsi_lite::app::beside_output(flecsi_lite::app::file_parameters().read(p).output_file, program,
+                                                   ".statistics.txt");
+    return std::vector<std::pair<std::string, std::string>>{{"statistics_file", statistics}};
+  };
   frame.run = app.run;
   return frame;
 }

@@ -29,6 +29,7 @@
 #include "flecsi_lite/runtime.hh"
 
 #include <cstdint>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -73,10 +74,12 @@ struct app_state : simulation<D> {
   /// restart from this step keeps the step in the series only then.
   bool output_due = false;
   /// Called by the frame (run_context::execute) once the run and its checks have passed: only
-  /// then does the output, complete since "finalize", replace an earlier file of its name, and
-  /// are the snapshots an earlier run left beyond this run's series removed.
+  /// then do the output, complete since "finalize", and the statistics file replace earlier
+  /// files of their names, and are the snapshots an earlier run left beyond this run's series
+  /// removed.
   void commit_outputs() {
     if (writer) writer->commit();
+    statistics.commit();
     if (snapshots) snapshots->remove_stale_snapshots();
   }
 };
@@ -239,8 +242,17 @@ void restart(app_state<D>& s) {
   const std::string& path = s.files.restart_file;
   const auto state = read_restart_checkpoint(s, path, {{"program", s.program}});  // program, dimension first
   const auto& written = checkpoint_entry(state, "parameters", path);
-  flecsi_lite::app::require_same_parameters(path, io::attribute_as<std::string>(written, "run state 'parameters'"),
-                                            s.parameters_text, restart_free_keys(), s.allowed_changes);
+  const auto written_text = io::attribute_as<std::string>(written, "run state 'parameters'");
+  flecsi_lite::app::require_same_parameters(path, written_text, s.parameters_text, restart_free_keys(),
+                                            s.allowed_changes);
+  // Global steps: dt = min(criteria, end_time - time) of the writing run, whose end_time it stores.
+  const auto written_values = flecsi_lite::app::parameter_values(written_text);
+  if (const auto end = written_values.find("end_time"); end != written_values.end()) {
+    char* rest = nullptr;
+    const double written_end_time = std::strtod(end->second.c_str(), &rest);
+    if (rest != end->second.c_str() && !s.physics.individual_time_steps())
+      detail::check_step_left(path, s.time, s.dt, written_end_time);
+  }
   s.next_output = io::attribute_as<double>(checkpoint_entry(state, "next_output", path), "run state 'next_output'");
   s.output_due = io::attribute_as<std::int64_t>(checkpoint_entry(state, "output_due", path), "run state 'output_due'");
   flecsi_lite::log::info() << s.program << ": restarting at step " << s.step << ", t = " << s.time << " from '" << path
@@ -421,7 +433,9 @@ struct app_definition {
   physics_settings physics_defaults;  ///< gamma, kernel, dissipation, ... of the problem
   run_settings run_defaults;          ///< end_time, progress_every, diagnostics_every of the problem
   io_settings file_defaults;          ///< output_file and checkpoint_file of the problem
-  std::function<void(flecsi_lite::runtime::options&)> declare_options;  ///< the app's checks
+  std::function<void(flecsi_lite::runtime::options&)> declare_options;  ///< the app's own options
+  /// The app's checks, parsed at start-up (flecsi_lite/app/check_options.hh): run.checks().
+  std::vector<flecsi_lite::app::check_option> checks;
   std::function<int(const flecsi_lite::app::run_context&)> run;
 };
 

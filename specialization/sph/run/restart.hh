@@ -18,6 +18,7 @@
 #include "specialization/sph/files/particle_output.hh"
 #include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
+#include "specialization/sph/run/restart_checks.hh"
 
 #include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"
@@ -162,7 +163,8 @@ inline void check_clock(const flecsi_lite::io::h5part_reader& in, const flecsi_l
   const auto fail = [&](const std::string& what) { throw flecsi_lite::io::layout_error(where + what); };
   for (const char* name : {"dt", "step"})
     if (!has(name)) fail("no attribute '" + std::string(name) + "'");
-  if (!has("time") && !has("TimeValue")) fail("no attribute 'time'");
+  // 'time' itself: TimeValue is ParaView's copy, not the run's clock (README: a restart needs 'time').
+  if (!has("time")) fail("no attribute 'time'");
   const auto text = [](double v) {
     std::ostringstream out;
     out.precision(17);
@@ -208,6 +210,7 @@ void write_restart_checkpoint(simulation<D>& s, const std::string& path, flecsi_
 /// distributes them as the writing run had (detail::distribute_as_written) and marks it
 /// restarted, so that the driver does not recompute the state of the restart step. The
 /// checkpoint's clock must be usable (detail::check_clock, with s.run.end_time), its ids unique,
+/// with individual time steps its timeline, clock and step windows consistent (restart_checks.hh),
 /// and its run state must hold the dimension D and every entry of `required` (e.g. the program)
 /// with the same value. The tree settings (box, periodic axes) must be set. Returns the
 /// checkpoint's run state.
@@ -233,6 +236,10 @@ flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::
   s.dt = contents.info.dt;
   s.initial_totals = detail::load_totals<D>(contents.state, s.physics.gravity.enabled, path);
   detail::load_timeline(s, contents.state, path);
+  if (s.physics.individual_time_steps()) {
+    detail::check_clock_on_timeline(path, s.clock, s.time, s.dt, s.run.end_time);
+    detail::check_time_bins(in, s.clock);
+  }
   detail::distribute_as_written(s);
   s.restarted = true;
   return contents.state;

@@ -121,31 +121,51 @@ std::string statistics_line(long step, double time, double dt, const conserved_t
 }
 
 /// The open statistics file; only rank 0 holds a stream, every call is collective so that a
-/// failure (a full disk) is the same io_error on every rank.
+/// failure (a full disk) is the same io_error on every rank. Rows go to `<path>.partial`, renamed
+/// over `<path>` by commit() once the run succeeded: a failed run never replaces an earlier file.
 class statistics_log {
  public:
   bool is_open() const { return open_; }
   const std::string& path() const { return path_; }
 
-  /// A new run (`restart_step` empty) replaces `path` with `header`. A restart at step N appends to
-  /// the file of the run it continues: the file's header is kept and its rows after step N are
-  /// dropped first (the earlier run may have gone past its checkpoint), when the column line is
-  /// this run's; without a file, a new one is started with `header`.
+  /// A new run (`restart_step` empty) starts `<path>.partial` with `header`. A restart at step N
+  /// continues the file of the run it continues (the `.partial` an interrupted run left, else
+  /// `path`): its header is kept and its rows after step N are dropped first (the earlier run
+  /// may have gone past its checkpoint), when the column line is this run's; without a file, a
+  /// new one is started with `header`.
   void open(const std::string& path, const std::string& header, std::optional<long> restart_step) {
     flecsi_lite::io::agree(flecsi_lite::runtime::communicator(), [&] {
       if (flecsi_lite::runtime::rank() != 0) return;
       std::string kept = header;
       if (restart_step) {
-        if (std::filesystem::is_regular_file(std::filesystem::symlink_status(path)))
+        const auto regular = [](const std::string& name) {
+          return std::filesystem::is_regular_file(std::filesystem::symlink_status(name));
+        };
+        const std::string partial = path + ".partial";
+        if (regular(partial))
+          kept = rows_up_to(partial, header, *restart_step);
+        else if (regular(path))
           kept = rows_up_to(path, header, *restart_step);
         kept += restart_mark + std::to_string(*restart_step) + "\n";
       }
-      flecsi_lite::io::write_text_file(path, kept, "statistics_file");
-      out_.open(path, std::ios::app);
-      if (!out_) throw flecsi_lite::io::file_error("cannot append to the statistics_file '" + path + "'");
+      flecsi_lite::io::write_text_file_aside(path, kept, "statistics_file");
+      out_.open(path + ".partial", std::ios::app);
+      if (!out_) throw flecsi_lite::io::file_error("cannot append to the statistics_file '" + path + ".partial'");
     });
     path_ = path;
     open_ = true;
+  }
+
+  /// Once the run succeeded: `<path>.partial`, complete, replaces `path`. Collective.
+  void commit() {
+    if (!open_) return;
+    flecsi_lite::io::agree(flecsi_lite::runtime::communicator(), [&] {
+      if (flecsi_lite::runtime::rank() != 0) return;
+      out_.close();
+      if (!out_) throw flecsi_lite::io::file_error("cannot write to the statistics_file '" + path_ + ".partial'");
+      flecsi_lite::io::commit_text_file(path_, "statistics_file");
+    });
+    open_ = false;
   }
 
   /// Appends one row and flushes it (a crash keeps every row written). Collective.
