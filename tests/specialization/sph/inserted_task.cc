@@ -94,9 +94,13 @@ TEST_CASE("a task placed after forces runs there on every rank, every step", "[s
   m.run(s);
   REQUIRE(s.step == 12);
 
-  const std::vector<std::string> evaluation{"force_evaluation",         "force_evaluation/search",
-                                            "force_evaluation/density", "force_evaluation/equation_of_state",
-                                            "force_evaluation/forces",  "force_evaluation/external_force"};
+  const std::vector<std::string> evaluation{"force_evaluation",
+                                            "force_evaluation/search",
+                                            "force_evaluation/density",
+                                            "force_evaluation/equation_of_state",
+                                            "force_evaluation/viscosity_switch",
+                                            "force_evaluation/forces",
+                                            "force_evaluation/external_force"};
   std::vector<std::string> initialize{"start"};
   initialize.insert(initialize.end(), evaluation.begin(), evaluation.end());
   initialize.insert(initialize.end(), {"first_time_step", "diagnostics"});
@@ -113,12 +117,14 @@ TEST_CASE("a task placed after forces runs there on every rank, every step", "[s
   CHECK(seen.task_visits[0].initializing);
   CHECK(seen.task_visits[0].step == 0);
   CHECK(seen.task_visits[0].time == 0.0);
-  CHECK(seen.task_visits[0].actions_before == 6);  // start, the stage, search, density, EOS, forces
+  // start, the stage, search, density, EOS, viscosity_switch, forces
+  CHECK(seen.task_visits[0].actions_before == 7);
   for (std::size_t k = 1; k < seen.task_visits.size(); ++k) {
     CHECK(!seen.task_visits[k].initializing);
     CHECK(seen.task_visits[k].step == static_cast<long>(k - 1));
     CHECK(seen.task_visits[k].time == seen.advance_start_times[k - 1]);
-    CHECK(seen.task_visits[k].actions_before == 6);  // kick_drift, the stage, search, density, EOS, forces
+    // kick_drift, the stage, search, density, EOS, viscosity_switch, forces
+    CHECK(seen.task_visits[k].actions_before == 7);
   }
   CHECK(seen.advance_start_times.back() < s.time);
 
