@@ -6,6 +6,8 @@
 // The comparison is made on the output by tests/validation/check_noh.py and apps/noh/plot_noh.py.
 #pragma once
 
+#include "glass_tiling.hh"
+
 #include "specialization/sph.hh"
 
 #include "flecsi_lite/io.hh"
@@ -44,26 +46,30 @@ void set_open_domain(sph::simulation<D>& s, const problem& problem) {
 }
 
 /// Fills this rank's block of the lattice (cell centres, so no particle sits at the centre):
-/// masses and h whose SPH density is rho0 on the lattice, v = -speed x / |x|. Collective.
+/// masses and h whose SPH density is rho0 on the lattice, v = -speed x / |x|. With a `glass`
+/// (initial_lattice = glass) the particles are the tiled glass's, of equal mass rho0 V / N. Collective.
 template<int D>
-void create_lattice(sph::simulation<D>& s, const problem& problem) {
+void create_lattice(sph::simulation<D>& s, const problem& problem, const glass::tiling<D>* glass = nullptr) {
   std::uint64_t total = 1;
   for (int k = 0; k < D; ++k) total *= static_cast<std::uint64_t>(problem.per_side);
   const auto block = flecsi_lite::io::block_slice(total, flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
   set_open_domain(s, problem);
   sph::create_particles(s, block.count);
   const double spacing = problem.side / double(problem.per_side);
-  const auto particle = sph::density_consistent_particle<D>(
-    s.physics, problem.rho0, std::pow(spacing, D),
-    [&](double h) { return sph::lattice_kernel_sum<D>(s.physics.kernel, h, spacing, spacing, 0.0); });
+  const auto particle =
+    glass ? glass->particle(s.physics, problem.rho0, spacing)
+          : sph::density_consistent_particle<D>(s.physics, problem.rho0, std::pow(spacing, D), [&](double h) {
+              return sph::lattice_kernel_sum<D>(s.physics.kernel, h, spacing, spacing, 0.0);
+            });
   const double u = s.physics.eos.ideal.internal_energy(problem.rho0, problem.pressure);
   const auto n = static_cast<std::uint64_t>(problem.per_side);
   sph::initial_fields(s, [&](std::size_t i, sph::initial_particle<D>& p) {
     std::uint64_t index = block.offset + i;
     p.id = index;
     double r2 = 0;
+    if (glass) p.x = glass->position(-0.5 * problem.side, problem.side, index);
     for (int k = 0; k < D; ++k, index /= n) {
-      p.x[k] = (double(index % n) + 0.5) * spacing - 0.5 * problem.side;
+      if (!glass) p.x[k] = (double(index % n) + 0.5) * spacing - 0.5 * problem.side;
       r2 += p.x[k] * p.x[k];
     }
     const double r = std::sqrt(r2);

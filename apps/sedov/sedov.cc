@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -23,6 +24,8 @@ namespace sph = flecsph::sph;
 template<int D>
 struct sedov_run : sph::app_state<D> {
   sedov::problem problem;
+  glass::layout_settings layout;  ///< initial_lattice = lattice (default) or glass
+  std::optional<glass::tiling<D>> glass;
   sedov::blast_comparison blast;
 };
 
@@ -57,12 +60,17 @@ int run(const app::run_context& context) {
   sedov_run<D> s;
   sph::configure(s, context);
   s.problem = sedov::problem_parameters().read(context.parameters());
+  s.layout = glass::layout_parameters().read(context.parameters());
+  if (s.layout.layout == glass::start_layout::glass) glass::tiles_per_side(s.layout, s.problem.per_side, s.program);
   sph::require_equation_of_state(s.physics, flecsph::physics::eos_type::ideal_gas, s.program,
                                  "the similarity solution");
   s.description = {{"blast_energy", s.problem.energy}, {"rho0", s.problem.rho0}};
   auto m = sph::make_app_control_model<sedov_run<D>>(
     {[](sedov_run<D>& state) { sedov::set_periodic_box(state, state.problem); },
-     [](sedov_run<D>& state) { sedov::create_lattice(state, state.problem); }});
+     [](sedov_run<D>& state) {
+       state.glass = glass::choose_tiling<D>(state.layout, state.physics, state.problem.per_side, state.program);
+       sedov::create_lattice(state, state.problem, state.glass ? &*state.glass : nullptr);
+     }});
   m.action("finalize", "report", report<D>);
   return context.execute(m, s, [&context](const sedov_run<D>& state) { return check(state, context.checks()); });
 }
@@ -76,6 +84,7 @@ int main(int argc, char** argv) {
     "similarity solution.";
   definition.declare_parameters = [](runtime::parameter_schema& schema) {
     sedov::problem_parameters().declare(schema);
+    glass::layout_parameters().declare(schema);
   };
   // Without a parameter file: the problem of apps/sedov/sedov_3d.par (validation.defaults.sedov).
   definition.physics_defaults.conductivity = 0;

@@ -3,6 +3,8 @@
 // similarity solution (Sedov 1959; Kamm & Timmes 2007): shock radius from the radial density peak.
 #pragma once
 
+#include "glass_tiling.hh"
+
 #include "specialization/analytic.hh"
 #include "specialization/sph.hh"
 
@@ -48,9 +50,10 @@ void set_periodic_box(sph::simulation<D>& s, const problem& problem) {
 /// Fills this rank's block of the lattice (positions, ids, masses, h, u): masses and h whose SPH
 /// density is rho0 (sph::density_consistent_particle). The blast energy is
 /// E w_i / sum_j m_j w_j per unit mass with w_i = W(|x_i|, h) of the particle's h, so that exactly E
-/// (up to rounding) is deposited, spread by the kernel. Collective.
+/// (up to rounding) is deposited, spread by the kernel. With a `glass` (initial_lattice = glass)
+/// the particles are the tiled glass's, of equal mass rho0 V / N. Collective.
 template<int D>
-void create_lattice(sph::simulation<D>& s, const problem& problem) {
+void create_lattice(sph::simulation<D>& s, const problem& problem, const glass::tiling<D>* glass = nullptr) {
   std::uint64_t total = 1;
   for (int k = 0; k < D; ++k) total *= static_cast<std::uint64_t>(problem.per_side);
   const auto block = flecsi_lite::io::block_slice(total, flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
@@ -58,9 +61,11 @@ void create_lattice(sph::simulation<D>& s, const problem& problem) {
   sph::create_particles(s, block.count);
   const double spacing = problem.side / double(problem.per_side);
   // The mass and h whose SPH density sum on the cubic lattice is rho0 (not 0.2-0.4% more).
-  const auto particle = sph::density_consistent_particle<D>(
-    s.physics, problem.rho0, std::pow(spacing, D),
-    [&](double h) { return sph::lattice_kernel_sum<D>(s.physics.kernel, h, spacing, spacing, 0.0); });
+  const auto particle =
+    glass ? glass->particle(s.physics, problem.rho0, spacing)
+          : sph::density_consistent_particle<D>(s.physics, problem.rho0, std::pow(spacing, D), [&](double h) {
+              return sph::lattice_kernel_sum<D>(s.physics.kernel, h, spacing, spacing, 0.0);
+            });
   const double mass = particle.mass;
   const double smoothing = particle.h;
   const double u_background = s.physics.eos.ideal.internal_energy(problem.rho0, problem.background_pressure);
@@ -69,6 +74,7 @@ void create_lattice(sph::simulation<D>& s, const problem& problem) {
   double weight_sum = 0;
   const std::int64_t n = problem.per_side;
   const auto site = [&](std::uint64_t index) {
+    if (glass) return glass->position(-0.5 * problem.side, problem.side, index);
     sph::vector<D> position;
     for (int k = 0; k < D; ++k, index /= static_cast<std::uint64_t>(n))
       position[k] = (double(index % static_cast<std::uint64_t>(n)) + 0.5) * spacing - 0.5 * problem.side;
