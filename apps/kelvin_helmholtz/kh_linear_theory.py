@@ -10,7 +10,11 @@ decaying as exp(-kappa |y|) away from it, kappa^2 = k^2 (1 - rho (U - c)^2 / (ga
 shooting and Newton on c; the growth rate is sigma = k Im(c). gamma P -> infinity gives the
 incompressible rate; L -> 0 the vortex sheet's k dU sqrt(rho1 rho2) / (rho1 + rho2).
 
-    kh_linear_theory.py [--json FILE]
+    kh_linear_theory.py [--json FILE] [--michalke]
+
+--michalke checks the solver on the classical case first: the homogeneous tanh layer U = -(1/2)
+tanh(y / delta) at k delta = 0.4446 grows at 0.1897 (U / delta) (Michalke 1964, J. Fluid Mech. 19,
+543); measured 3.79404 against 3.794 for delta = 0.025.
 """
 import argparse
 import json
@@ -85,10 +89,33 @@ def growth_rate(k=kh.WAVE_NUMBER, sound=kh.GAMMA * kh.PRESSURE, length=kh.SMOOTH
     return k * c.imag, c
 
 
+def michalke_check():
+    """Michalke's (1964) homogeneous tanh layer through the same solver; exits 1 beyond 1e-3."""
+    sharp = kh.profile
+
+    def tanh_layer(y, outer, inner, length=kh.SMOOTHING):
+        if (outer, inner) == (kh.RHO1, kh.RHO2):
+            return np.ones_like(np.asarray(y, dtype=float))
+        return -0.5 * np.tanh((np.asarray(y, dtype=float) - 0.25) / length)
+
+    kh.profile = tanh_layer
+    try:
+        rate, _ = growth_rate(k=0.4446 / kh.SMOOTHING, sound=None)
+    finally:
+        kh.profile = sharp
+    expected = 0.1897 * 0.5 / kh.SMOOTHING
+    print("Michalke (1964) tanh layer, k delta = 0.4446: growth rate %.5f, published %.4f" % (rate, expected))
+    if abs(rate / expected - 1) > 1e-3:
+        sys.exit(1)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--json")
+    parser.add_argument("--michalke", action="store_true", help="check the solver on Michalke's tanh layer")
     arguments = parser.parse_args()
+    if arguments.michalke:
+        michalke_check()
     compressible, c = growth_rate()
     incompressible, _ = growth_rate(sound=None)
     sheet = kh.WAVE_NUMBER * abs(kh.U1 - kh.U2) * np.sqrt(kh.RHO1 * kh.RHO2) / (kh.RHO1 + kh.RHO2)

@@ -9,6 +9,10 @@ rho2 = 2, U1 = 0.5, U2 = -0.5, L = 0.025, P = 2.5, gamma 5/3; v_y = 0.01 sin(4 p
 """
 import numpy as np
 
+# The linear growth rate of this profile at k = 4 pi, compressible (gamma P = 25/6), from
+# kh_linear_theory.py (its output 2.81930; 3.01867 incompressible; vortex sheet 5.92384).
+LINEAR_GROWTH_RATE = 2.81930
+
 RHO1, RHO2, U1, U2, SMOOTHING, PRESSURE, GAMMA, WAVE_NUMBER = 1.0, 2.0, 0.5, -0.5, 0.025, 2.5, 5.0 / 3.0, 4 * np.pi
 
 
@@ -40,3 +44,21 @@ def mode_amplitude(x, y, vy, volume):
     s = np.sum(vy * np.sin(4 * np.pi * x) * weight * volume)
     c = np.sum(vy * np.cos(4 * np.pi * x) * weight * volume)
     return 2.0 * np.sqrt((s / d) ** 2 + (c / d) ** 2)
+
+
+def amplitude_series(path, read_step, steps):
+    """(times, mode amplitudes) of the steps of an H5Part output (V = m / rho)."""
+    times, amplitudes = [], []
+    for step in steps:
+        time, data, _ = read_step(path, step)
+        times.append(time)
+        amplitudes.append(mode_amplitude(data["x"] % 1.0, data["y"] % 1.0, data["vy"], data["m"] / data["rho"]))
+    return np.array(times), np.array(amplitudes)
+
+
+def growth_rate(times, amplitudes, window):
+    """The least-squares slope of ln M over the steps with window[0] <= t <= window[1]."""
+    inside = (times >= window[0] - 1e-9) & (times <= window[1] + 1e-9)
+    if inside.sum() < 3:
+        return float("nan")
+    return float(np.polyfit(times[inside], np.log(amplitudes[inside]), 1)[0])

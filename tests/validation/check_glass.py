@@ -48,7 +48,7 @@ def main():
               glass["low_k_structure_factor"] <= arguments.low)
     glass["bounds"] = {"density_scatter": arguments.scatter, "relative_peak_structure_factor": arguments.peak,
                        "low_k_structure_factor": arguments.low}
-    glass["pass"] = passed
+    glass["pass"] = bool(passed)
     print("glass %s (%dD, %d particles, t = %.4g): density scatter %.3e (bound %g); structure factor: peak %.2f = %.4f N "
           "at |m| = %.2f (bound %g N; lattice %.0f = N), low-k mean %.3f (bound %g; random %.3f): %s" %
           (arguments.file, dimension, glass["particles"], time, glass["density_scatter"], arguments.scatter,

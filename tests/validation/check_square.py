@@ -42,7 +42,7 @@ def main():
     result["time"] = float(time)
     passed = result["squareness"] >= arguments.square and result["corner_fill"] >= arguments.corner and result["dense_fraction"] >= arguments.dense
     result["bounds"] = {"squareness": arguments.square, "corner_fill": arguments.corner, "dense_fraction": arguments.dense}
-    result["pass"] = passed
+    result["pass"] = bool(passed)
     print("square test at t = %.4g, %d square particles: squareness %.3f (bound %g; square 1, circle 0), corner fill %.3f (bound %g; a circle of the same area "
           "%.3f; %d corner particles at the start), dense fraction %.3f (bound %g), smallest interior density %.3f, "
           "largest speed %.3g: %s" %
