@@ -13,7 +13,7 @@
 
 #include "flecsi_lite/app.hh"
 #include "flecsi_lite/runtime.hh"
-#include "flecsi_lite/util/exact_sum.hh"
+#include "flecsi_lite/util.hh"
 
 #include <cmath>
 #include <iomanip>
