@@ -144,6 +144,12 @@ int run(const app::run_context& context) {
     throw runtime::parameter_error(
       "glass: time_steps = individual: the relaxation damps every particle's velocity "
       "in every step, which individual steps do not take; use time_steps = global");
+  // The convergence test's history (the scatter at the last check) is not in the checkpoints, so a
+  // resumed relaxation would stop at another step than the uninterrupted one.
+  if (!s.files.restart_file.empty())
+    throw runtime::parameter_error("glass: restart_file = '" + s.files.restart_file +
+                                   "': a glass relaxation cannot be resumed (its convergence history is not in the "
+                                   "checkpoint); rerun it, it takes seconds to minutes");
   // The default output is the cache file sedov and noh look for (glass_tiling.hh).
   if (context.parameters().origin("output_file") == "default")
     s.files.output_file = glass::cache_name(
