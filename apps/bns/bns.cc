@@ -3,12 +3,15 @@
 // with velocity damping and u on the polytrope, written as H5Part initial data; a binary of two
 // relaxed stars, relaxed in the corotating frame (centrifugal term and damping, Kepler's Omega),
 // then given the rigid velocities Omega x r and released; each star's centre of mass, the
-// separation, the orbital phase and the quadrupole strain h+, hx in the statistics file.
+// separation, the orbital phase and the quadrupole strain h+, hx in the statistics file; with
+// radiation_reaction, the 2.5PN point-mass radiation reaction on the stars until contact, its
+// energy and angular momentum losses and the balance E + E_radiated (bns_radiation_reaction.hh).
 //
 //   bns apps/bns/single_star.par                     # writes the relaxed star bns_star.h5part
 //   mpirun -np 2 bns apps/bns/binary_stable.par      # reads it; the orbit at a = 4 R
 #include "bns_diagnostics.hh"
 #include "bns_problem.hh"
+#include "bns_radiation_reaction.hh"
 
 #include "specialization/sph.hh"
 
@@ -45,6 +48,8 @@ struct bns_run : sph::app_state<3> {
   double first_separation = 0, last_separation = 0, largest_separation_drift = 0;
   double first_lz = 0, largest_lz_drift = 0;
   double monitored_from = 0;
+  bns::radiation_reaction_record radiation_reaction;
+  double first_balance = 0, largest_balance_drift = 0;  ///< E + E_radiated from the release on
 };
 
 /// a += -v / tau + Omega^2 (x, y, 0) - (the star's mean of those and of the forces): the damped
@@ -170,6 +175,15 @@ std::vector<sph::statistics_column> extra_columns(const bns_run& s) {
   add("h_plus", "strain h+ on the z axis at observer_distance, quadrupole formula", "1");
   add("h_cross", "strain hx on the z axis at observer_distance", "1");
   add("relaxing", "1 during the damped relaxation, 0 after", "1");
+  if (s.problem.radiation_reaction) {
+    add("radiation_reaction_power", "energy per time the radiation reaction removed at the last force evaluation",
+        "M L^2 T^-3");
+    add("quadrupole_luminosity", "Peters-Mathews quadrupole luminosity of the stars' centres then", "M L^2 T^-3");
+    add("radiated_energy", "energy removed by the radiation reaction since the start", "M L^2 T^-2");
+    add("radiated_angular_momentum", "z angular momentum removed by the radiation reaction", "M L^2 T^-1");
+    add("energy_balance", "total + radiated_energy: conserved", "M L^2 T^-2");
+    add("radiation_reaction_on", "1 while it acts (released, before contact), 0 otherwise", "1");
+  }
   return columns;
 }
 
@@ -191,6 +205,11 @@ std::vector<double> extra_values(bns_run& s) {
   const auto h =
     flecsph::physics::strain_on_z_axis(stars.rate, s.G, s.problem.speed_of_light, s.problem.observer_distance);
   values.insert(values.end(), {h.plus, h.cross, s.relaxing ? 1.0 : 0.0});
+  if (s.problem.radiation_reaction) {
+    const auto& rr = s.radiation_reaction;
+    values.insert(values.end(), {rr.power, rr.luminosity, rr.radiated_energy, rr.radiated_angular_momentum,
+                                 sph::measure_conserved(s).total + rr.radiated_energy, rr.applied ? 1.0 : 0.0});
+  }
   return values;
 }
 
@@ -212,11 +231,15 @@ void monitor(bns_run& s) {
     double d2 = 0;
     for (int k = 0; k < 3; ++k)
       d2 += (stars.centre[1][k] - stars.centre[0][k]) * (stars.centre[1][k] - stars.centre[0][k]);
-    const double lz = sph::measure_conserved(s).angular_momentum[2];
-    if (!s.monitoring) s.first_separation = std::sqrt(d2), s.first_lz = lz;
+    const auto totals = sph::measure_conserved(s);
+    // With the radiation reaction, Lz + L_radiated is what is conserved.
+    const double lz = totals.angular_momentum[2] + s.radiation_reaction.radiated_angular_momentum;
+    const double balance = totals.total + s.radiation_reaction.radiated_energy;
+    if (!s.monitoring) s.first_separation = std::sqrt(d2), s.first_lz = lz, s.first_balance = balance;
     s.last_separation = std::sqrt(d2);
     s.largest_separation_drift = std::max(s.largest_separation_drift, drift(std::sqrt(d2), s.first_separation));
     s.largest_lz_drift = std::max(s.largest_lz_drift, drift(lz, s.first_lz));
+    s.largest_balance_drift = std::max(s.largest_balance_drift, std::fabs(balance - s.first_balance));
   }
   if (!s.monitoring) s.monitored_from = s.time;
   s.monitoring = true;
@@ -236,8 +259,20 @@ void report(bns_run& s) {
   else
     line << "; from t = " << s.monitored_from << " (" << (s.time - s.monitored_from) * s.omega / (2 * std::acos(-1.0))
          << " orbits): separation " << s.first_separation << " -> " << s.last_separation << ", largest |a / a0 - 1| "
-         << s.largest_separation_drift << ", largest |Lz / Lz0 - 1| " << s.largest_lz_drift;
+         << s.largest_separation_drift << ", largest |Lz / Lz0 - 1| " << s.largest_lz_drift
+         << (s.problem.radiation_reaction ? " (Lz + L_radiated)" : "");
   log::info() << line.str();
+  if (s.problem.radiation_reaction && s.monitoring) {
+    const auto& rr = s.radiation_reaction;
+    std::ostringstream out;
+    out << std::setprecision(5) << "bns: radiation reaction: radiated energy " << rr.radiated_energy
+        << ", angular momentum " << rr.radiated_angular_momentum << "; largest |E + E_radiated - (E + E_radiated)_0| "
+        << s.largest_balance_drift << " = " << s.largest_balance_drift / std::fabs(rr.radiated_energy)
+        << " of the radiated energy; "
+        << (rr.switched_off ? "switched off at contact, t = " + std::to_string(rr.switched_off_at)
+                            : std::string("still on at the end"));
+    log::info() << out.str();
+  }
 }
 
 /// --check-equilibrium D,R (single star) and --check-orbit S,L (binary): exit status 1 when exceeded.
@@ -250,6 +285,15 @@ int check(const bns_run& s, const app::check_values& checks) {
     if (!ok)
       log::error() << "bns: check failed: density error " << s.first_density_error << ", " << s.last_density_error
                    << " (bound " << b[0] << "), radius drift " << s.largest_radius_drift << " (bound " << b[1] << ")";
+    pass = pass && ok;
+  }
+  if (checks.has("check-energy-balance")) {
+    const double bound = checks.bounds("check-energy-balance")[0];
+    const double radiated = s.radiation_reaction.radiated_energy;
+    const bool ok = s.monitoring && radiated > 0 && s.largest_balance_drift <= bound * radiated;
+    if (!ok)
+      log::error() << "bns: check failed: largest |E + E_radiated - (E + E_radiated)_0| " << s.largest_balance_drift
+                   << " against " << bound << " of the radiated energy " << radiated;
     pass = pass && ok;
   }
   if (checks.has("check-orbit")) {
@@ -267,6 +311,22 @@ int run(const app::run_context& context) {
   bns_run s;
   sph::configure(s, context);
   s.problem = bns::problem_parameters().read(context.parameters());
+  if (s.problem.physical_constants) {
+    for (const char* key : {"gravitational_constant", "speed_of_light"})
+      if (context.parameters().origin(key) != "default")
+        throw runtime::parameter_error(std::string("bns: physical_constants = true derives ") + key +
+                                       " from the unit keys: do not set it");
+    const auto& u = s.output_keys.units;
+    const auto constants = bns::physical_constants_in_code_units(u.mass_in_cgs, u.length_in_cgs, u.time_in_cgs);
+    s.physics.gravity.constant = constants.gravitational_constant;
+    s.problem.speed_of_light = constants.speed_of_light;
+  }
+  if (s.problem.radiation_reaction && s.problem.kind != bns::setup::binary)
+    throw runtime::parameter_error("bns: radiation_reaction = true needs setup = binary (it acts on two stars)");
+  if (s.problem.radiation_reaction && s.physics.individual_time_steps())
+    throw runtime::parameter_error(
+      "bns: radiation_reaction = true with time_steps = individual: the stars' reaction is evaluated at every "
+      "system step for every particle; use time_steps = global");
   bns::check_problem(s.problem, s.physics, context.parameters().origin("polytropic_constant") != "default");
   s.G = s.physics.gravity.constant;
   s.K = bns::polytropic_constant(s.problem.radius, s.G);
@@ -285,6 +345,10 @@ int run(const app::run_context& context) {
                    {"polytropic_constant", s.K},
                    {"gravitational_constant", s.G},
                    {"dynamical_time", s.dynamical_time}};
+  if (s.problem.radiation_reaction) {
+    s.description["companion_mass"] = s.problem.companion_mass;
+    s.description["speed_of_light"] = s.problem.speed_of_light;
+  }
   s.extra_statistics_columns = extra_columns(s);
   s.extra_statistics = [&s] { return extra_values(s); };
   auto m = sph::make_app_control_model<bns_run>({[](bns_run&) {},
@@ -309,6 +373,7 @@ int run(const app::run_context& context) {
            })
     .after("gravity");
   m.action("force_evaluation", "relaxation", relaxation_forces).after("forces");
+  bns::place_radiation_reaction(m);
   m.action("advance", "polytrope", keep_on_polytrope).after("kick");
   m.action("analyze", "relaxation_check",
            [](bns_run& state) {
@@ -345,7 +410,12 @@ int main(int argc, char** argv) {
      "the half-mass and 90% radii within R of their values after the relaxation"},
     {"check-orbit",
      {"S", "L"},
-     "binary: exit 1 unless the separation stays within S and Lz within L of their values at release"}};
+     "binary: exit 1 unless the separation stays within S and Lz (plus the radiated Lz) within L of their values "
+     "at release"},
+    {"check-energy-balance",
+     {"B"},
+     "binary with radiation_reaction: exit 1 unless E + E_radiated stays within B times the radiated energy of its "
+     "value at release"}};
   definition.run = [](const app::run_context& context) { return run(context); };
   return sph::app_main(argc, argv, definition);
 }
