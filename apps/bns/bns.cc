@@ -12,6 +12,7 @@
 #include "bns_diagnostics.hh"
 #include "bns_problem.hh"
 #include "bns_radiation_reaction.hh"
+#include "bns_star_cache.hh"
 
 #include "specialization/sph.hh"
 
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -307,7 +309,62 @@ int check(const bns_run& s, const app::check_values& checks) {
   return pass ? 0 : 1;
 }
 
-int run(const app::run_context& context) {
+int run(const app::run_context& context, const bns::star_cache_entry* making = nullptr);
+
+/// Relaxes the star of `entry` into its file: a single-star run of the same parameters with the
+/// star_* relaxation settings, on all ranks; throws when it fails.
+void make_cached_star(const app::run_context& context, const bns::star_cache_entry& entry, double dynamical_time) {
+  const auto& p = context.parameters();
+  const double longest = p.get<double>("star_relaxation_time");
+  const auto number = [](double value) {
+    std::ostringstream text;
+    text << std::setprecision(17) << value;
+    return text.str();
+  };
+  // The run's own parameter file and --set assignments (so that every key keeps its origin), then these.
+  std::vector<std::string> overrides = context.options().all("set");
+  const std::vector<std::string> star = {"setup=star",
+                                         "output_file=" + entry.path,
+                                         "statistics_file=none",
+                                         "restart_file=none",
+                                         "initial_data=none",
+                                         "star_cache=none",
+                                         "radiation_reaction=false",
+                                         "max_steps=0",
+                                         "relaxation_time=" + number(longest),
+                                         "relaxation_min_time=" + number(p.get<double>("star_relaxation_min_time")),
+                                         "damping_time=" + number(p.get<double>("star_damping_time")),
+                                         "end_time=" + number(longest * dynamical_time),
+                                         "output_every=" + number(longest * dynamical_time)};
+  overrides.insert(overrides.end(), star.begin(), star.end());
+  const auto star_parameters = runtime::parameters::load(p.schema(), context.options().get("parameters"), overrides);
+  static app::definition frame;
+  frame.program = context.program();
+  const app::run_context star_context(frame, star_parameters, context.options());
+  if (run(star_context, &entry) != 0)
+    throw std::runtime_error("bns: star cache: relaxing the star into '" + entry.path + "' failed");
+}
+
+/// star_cache: the binary's star file, made first when the cache lacks it; said and recorded.
+void use_star_cache(bns_run& s, const app::run_context& context) {
+  const auto entry = bns::star_cache_entry_for(context.parameters(), s.G, s.problem.star_cache);
+  std::ostringstream hash;
+  hash << std::hex << std::setw(16) << std::setfill('0') << entry.hash;
+  if (std::filesystem::exists(entry.path)) {
+    log::info() << "bns: star cache: reusing '" << entry.path << "' (key hash " << hash.str() << ")";
+  } else {
+    log::info() << "bns: star cache: no star for these keys (hash " << hash.str() << ") in '" << s.problem.star_cache
+                << "': relaxing one into '" << entry.path << "'";
+    if (runtime::rank() == 0) std::filesystem::create_directories(s.problem.star_cache);
+    make_cached_star(context, entry, s.dynamical_time);
+    log::info() << "bns: star cache: made '" << entry.path << "'";
+  }
+  s.problem.star_file = entry.path;
+  s.description["star_file_used"] = entry.path;
+  s.description["star_cache_hash"] = hash.str();
+}
+
+int run(const app::run_context& context, const bns::star_cache_entry* making) {
   bns_run s;
   sph::configure(s, context);
   s.problem = bns::problem_parameters().read(context.parameters());
@@ -345,6 +402,13 @@ int run(const app::run_context& context) {
                    {"polytropic_constant", s.K},
                    {"gravitational_constant", s.G},
                    {"dynamical_time", s.dynamical_time}};
+  if (making) {
+    for (const auto& [key, value] : making->keys) s.description["cache_" + key] = value;
+    std::ostringstream hash;
+    hash << std::hex << std::setw(16) << std::setfill('0') << making->hash;
+    s.description["cache_hash"] = hash.str();
+  }
+  if (s.problem.kind == bns::setup::binary && !s.problem.star_cache.empty()) use_star_cache(s, context);
   if (s.problem.radiation_reaction) {
     s.description["companion_mass"] = s.problem.companion_mass;
     s.description["speed_of_light"] = s.problem.speed_of_light;

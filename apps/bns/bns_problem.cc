@@ -47,6 +47,21 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
     .real("radiation_reaction_cutoff", &problem::radiation_reaction_cutoff,
           "the radiation reaction stops for good once the separation falls below this many star radii")
     .greater_than(0);
+  keys.file("star_cache", &problem::star_cache,
+            "setup = binary: folder of relaxed stars keyed by the keys that make them (instead of star_file): "
+            "reused when one exists, else relaxed first and kept there");
+  keys
+    .real("star_relaxation_time", &problem::star_relaxation_time,
+          "star_cache: longest relaxation of a star made for the cache, in units of t_dyn")
+    .greater_than(0);
+  keys
+    .real("star_relaxation_min_time", &problem::star_relaxation_min_time,
+          "star_cache: shortest relaxation of a star made for the cache, in units of t_dyn")
+    .at_least(0);
+  keys
+    .real("star_damping_time", &problem::star_damping_time,
+          "star_cache: damping time of a star made for the cache, in units of t_dyn")
+    .greater_than(0);
   keys.boolean("physical_constants", &problem::physical_constants,
                "G and c from unit_mass_in_cgs, unit_length_in_cgs, unit_time_in_cgs and their CGS values (then "
                "gravitational_constant and speed_of_light must not be set)");
@@ -151,8 +166,13 @@ void check_problem(const problem& problem, const sph::physics_settings& physics,
                         "particles, star_radius");
     return;
   }
-  if (problem.star_file.empty())
-    throw parameter_error("bns: setup = binary needs star_file, the H5Part file of a relaxed single star");
+  if (problem.star_file.empty() && problem.star_cache.empty())
+    throw parameter_error(
+      "bns: setup = binary needs star_file, the H5Part file of a relaxed single star, or star_cache, a folder of "
+      "them");
+  if (!problem.star_file.empty() && !problem.star_cache.empty())
+    throw parameter_error("bns: star_file = '" + problem.star_file + "' and star_cache = '" + problem.star_cache +
+                          "' both name the star: set one of them");
   const double a = problem.separation, R = problem.radius;
   if (a <= 2 * R) {
     m << "bns: separation = " << a << " is at most the sum of the stars' radii 2 star_radius = " << 2 * R

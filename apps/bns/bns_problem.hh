@@ -53,6 +53,12 @@ struct problem {
   /// G and c from the unit keys (unit_*_in_cgs) and their CGS values instead of the keys
   /// gravitational_constant and speed_of_light.
   bool physical_constants = false;
+  /// Binary: the folder of cached relaxed stars (bns_star_cache.hh; empty: star_file), and the
+  /// relaxation of a star made for it (in units of t_dyn; the tolerance is relaxation_tolerance).
+  std::string star_cache;
+  double star_relaxation_time = 30;
+  double star_relaxation_min_time = 12;
+  double star_damping_time = 1;
 };
 
 const flecsi_lite::runtime::parameter_block<problem>& problem_parameters();
