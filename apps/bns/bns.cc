@@ -115,12 +115,17 @@ void keep_on_polytrope(bns_run& s) {
   flecsi_lite::execute<polytrope_energy>(s.K, f::kind(p), f::density(p), f::internal_energy(p));
 }
 
-void corotate(double omega, sph::ro<sph::particle_kind> kind, sph::ro<vec> x, sph::ro<vec> extra, sph::wo<vec> v,
-              sph::rw<vec> a) {
+/// The release: v = Omega z x r, plus with `infall` each star's share of the inspiral's radial
+/// velocity (infall[star], the same for all its particles).
+void corotate(double omega, bool with_infall, std::array<vec, 2> infall, std::uint64_t first_star_end,
+              sph::ro<std::uint64_t> id, sph::ro<sph::particle_kind> kind, sph::ro<vec> x, sph::ro<vec> extra,
+              sph::wo<vec> v, sph::rw<vec> a) {
   flecsi_lite::forall(
     x.size(),
     [&](std::size_t p) {
       v(p) = kind(p) == sph::particle_kind::fluid ? vec{-omega * x(p)[1], omega * x(p)[0], 0.0} : vec{};
+      if (with_infall && kind(p) == sph::particle_kind::fluid)
+        for (int k = 0; k < 3; ++k) v(p)[k] += infall[static_cast<std::size_t>(bns::star_of(id(p), first_star_end))][k];
       for (int k = 0; k < 3; ++k) a(p)[k] -= extra(p)[k];
     },
     "bns::corotate");
@@ -146,7 +151,24 @@ void relaxation_check(bns_run& s) {
     line << "; the relaxed star is the last step of '" << s.files.output_file << "'";
   } else {
     auto& p = *s.particles;
-    flecsi_lite::execute<corotate>(s.omega, f::kind(p), f::position()(p), relaxation_acceleration(p), f::velocity(p),
+    // With the radiation reaction, the quasi-circular inspiral's radial velocity of Peters (1964),
+    // adot = -beta / a^3, shared as the centres' positions are (X_i adot / a): no eccentricity from
+    // releasing a shrinking orbit at rest in the radial direction.
+    std::array<vec, 2> infall{};
+    if (s.problem.radiation_reaction) {
+      const auto stars = bns::measure_stars(s, s.first_star_end);
+      double d2 = 0;
+      for (int k = 0; k < 3; ++k)
+        d2 += (stars.centre[1][k] - stars.centre[0][k]) * (stars.centre[1][k] - stars.centre[0][k]);
+      const double separation = std::sqrt(d2);
+      const double adot = -flecsph::physics::peters_rate(s.G, stars.mass[0], stars.mass[1], s.problem.speed_of_light) /
+                          (separation * separation * separation);
+      for (int star = 0; star < 2; ++star)
+        for (int k = 0; k < 3; ++k) infall[star][k] = adot / separation * stars.centre[star][k];
+      line << "; with Peters' radial velocity da/dt = " << adot;
+    }
+    flecsi_lite::execute<corotate>(s.omega, s.problem.radiation_reaction, infall, s.first_star_end, f::id()(p),
+                                   f::kind(p), f::position()(p), relaxation_acceleration(p), f::velocity(p),
                                    f::acceleration(p));
     line << "; released with Omega = " << s.omega << " ("
          << (s.problem.orbit_omega == bns::omega_rule::kepler ? "Kepler" : "the forces") << "), orbital period "
