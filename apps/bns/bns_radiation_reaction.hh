@@ -15,7 +15,7 @@
 
 #include "bns_diagnostics.hh"
 
-#include "specialization/physics/radiation_reaction.hh"
+#include "specialization/physics.hh"
 
 #include "flecsi_lite/control.hh"
 #include "flecsi_lite/execution.hh"
