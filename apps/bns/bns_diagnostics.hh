@@ -1,6 +1,6 @@
 // The binary's measures, summed exactly over ranks (Demmel & Nguyen superaccumulator: the same bits
 // on any number of ranks): each star's mass, centre of mass and mean acceleration (membership by
-// particle id: ids below first_star_end are star 1), the second time derivative of the quadrupole
+// particle id: ids below first_star_end are star 1), mean velocity, the second time derivative of the quadrupole
 // for the strain (physics/gravitational_waves.hh), and a single star's radial profile (mass radii
 // from particle counts, the mean density error against Lane-Emden inside 0.9 R).
 #pragma once
@@ -21,15 +21,16 @@ namespace bns {
 using vec = sph::vector<3>;
 using exact_sum = flecsi_lite::util::exact_sum;
 
-/// Per star: sum m, sum m x, sum m a; over all particles: sum m (2 v v + x a + a x).
+/// Per star: sum m, sum m x, sum m v, sum m a; over all particles: sum m (2 v v + x a + a x).
 struct star_sums {
   std::array<exact_sum, 2> mass;
-  std::array<std::array<exact_sum, 3>, 2> moment, force;
+  std::array<std::array<exact_sum, 3>, 2> moment, momentum, force;
   std::array<exact_sum, 6> rate;
   star_sums& operator+=(const star_sums& other) {
     for (int s = 0; s < 2; ++s) {
       mass[s] += other.mass[s];
-      for (int k = 0; k < 3; ++k) moment[s][k] += other.moment[s][k], force[s][k] += other.force[s][k];
+      for (int k = 0; k < 3; ++k)
+        moment[s][k] += other.moment[s][k], momentum[s][k] += other.momentum[s][k], force[s][k] += other.force[s][k];
     }
     for (int k = 0; k < 6; ++k) rate[k] += other.rate[k];
     return *this;
@@ -48,17 +49,21 @@ inline star_sums sum_stars(std::uint64_t first_star_end, sph::ro<std::uint64_t> 
     if (kind(p) != sph::particle_kind::fluid) continue;
     const int s = star_of(id(p), first_star_end);
     sums.mass[s].add(m(p));
-    for (int k = 0; k < 3; ++k) sums.moment[s][k].add(m(p) * x(p)[k]), sums.force[s][k].add(m(p) * a(p)[k]);
+    for (int k = 0; k < 3; ++k) {
+      sums.moment[s][k].add(m(p) * x(p)[k]);
+      sums.momentum[s][k].add(m(p) * v(p)[k]);
+      sums.force[s][k].add(m(p) * a(p)[k]);
+    }
     const auto term = flecsph::physics::quadrupole_second_derivative(m(p), x(p), v(p), a(p));
     for (int k = 0; k < 6; ++k) sums.rate[k].add(term[k]);
   }
   return sums;
 }
 
-/// The values of star_sums: centres of mass, mean accelerations, Ï_ij.
+/// The values of star_sums: centres of mass, their velocities, mean accelerations, Ï_ij.
 struct star_measures {
   std::array<double, 2> mass{};
-  std::array<vec, 2> centre{}, acceleration{};
+  std::array<vec, 2> centre{}, velocity{}, acceleration{};
   flecsph::physics::symmetric_tensor rate{};
 };
 
@@ -76,6 +81,7 @@ inline star_measures measure_stars(sph::simulation<3>& s, std::uint64_t first_st
     for (int k = 0; k < 3; ++k) {
       const double mass = result.mass[star] > 0 ? result.mass[star] : 1.0;
       result.centre[star][k] = sums.moment[star][k].value() / mass;
+      result.velocity[star][k] = sums.momentum[star][k].value() / mass;
       result.acceleration[star][k] = sums.force[star][k].value() / mass;
     }
   }

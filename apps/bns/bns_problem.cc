@@ -38,7 +38,33 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
   keys.real("damping_time", &problem::damping_time, "relaxation damping a -= v / (damping_time t_dyn)").greater_than(0);
   keys.real("observer_distance", &problem::observer_distance, "distance d of the strain's observer (z axis)")
     .greater_than(0);
-  keys.real("speed_of_light", &problem::speed_of_light, "c of the strain, in code units").greater_than(0);
+  keys.real("speed_of_light", &problem::speed_of_light, "c of the strain and the radiation reaction, in code units")
+    .greater_than(0);
+  keys.boolean("radiation_reaction", &problem::radiation_reaction,
+               "setup = binary: the 2.5PN point-mass radiation reaction on the stars after the release, until "
+               "contact (radiation_reaction_cutoff)");
+  keys
+    .real("radiation_reaction_cutoff", &problem::radiation_reaction_cutoff,
+          "the radiation reaction stops for good once the separation falls below this many star radii")
+    .greater_than(0);
+  keys.file("star_cache", &problem::star_cache,
+            "setup = binary: folder of relaxed stars keyed by the keys that make them (instead of star_file): "
+            "reused when one exists, else relaxed first and kept there");
+  keys
+    .real("star_relaxation_time", &problem::star_relaxation_time,
+          "star_cache: longest relaxation of a star made for the cache, in units of t_dyn")
+    .greater_than(0);
+  keys
+    .real("star_relaxation_min_time", &problem::star_relaxation_min_time,
+          "star_cache: shortest relaxation of a star made for the cache, in units of t_dyn")
+    .at_least(0);
+  keys
+    .real("star_damping_time", &problem::star_damping_time,
+          "star_cache: damping time of a star made for the cache, in units of t_dyn")
+    .greater_than(0);
+  keys.boolean("physical_constants", &problem::physical_constants,
+               "G and c from unit_mass_in_cgs, unit_length_in_cgs, unit_time_in_cgs and their CGS values (then "
+               "gravitational_constant and speed_of_light must not be set)");
   return keys;
 }
 
@@ -99,6 +125,12 @@ double roche_lobe_fraction(double mass, double companion) {
   return 0.49 * q23 / (0.6 * q23 + std::log(1 + q3));
 }
 
+code_constants physical_constants_in_code_units(double mass_in_cgs, double length_in_cgs, double time_in_cgs) {
+  const double G_cgs = 6.67430e-8, c_cgs = 2.99792458e10;
+  return {G_cgs * mass_in_cgs * time_in_cgs * time_in_cgs / (length_in_cgs * length_in_cgs * length_in_cgs),
+          c_cgs * time_in_cgs / length_in_cgs};
+}
+
 double kepler_omega(const problem& problem, double gravitational_constant) {
   const double a = problem.separation;
   return std::sqrt(gravitational_constant * (problem.mass + problem.companion_mass) / (a * a * a));
@@ -134,8 +166,13 @@ void check_problem(const problem& problem, const sph::physics_settings& physics,
                         "particles, star_radius");
     return;
   }
-  if (problem.star_file.empty())
-    throw parameter_error("bns: setup = binary needs star_file, the H5Part file of a relaxed single star");
+  if (problem.star_file.empty() && problem.star_cache.empty())
+    throw parameter_error(
+      "bns: setup = binary needs star_file, the H5Part file of a relaxed single star, or star_cache, a folder of "
+      "them");
+  if (!problem.star_file.empty() && !problem.star_cache.empty())
+    throw parameter_error("bns: star_file = '" + problem.star_file + "' and star_cache = '" + problem.star_cache +
+                          "' both name the star: set one of them");
   const double a = problem.separation, R = problem.radius;
   if (a <= 2 * R) {
     m << "bns: separation = " << a << " is at most the sum of the stars' radii 2 star_radius = " << 2 * R
@@ -191,6 +228,7 @@ void create_binary(sph::simulation<3>& s, const problem& problem) {
   if (n == 0) throw std::invalid_argument("bns: star_file '" + problem.star_file + "' holds no particles");
   const double file_mass = in.root_attribute_as<double>("star_mass");
   const double file_radius = in.root_attribute_as<double>("star_radius");
+  const double file_G = in.root_attribute_as<double>("gravitational_constant");
   // Every rank reads the whole star (a few thousand particles), in id order.
   const flecsi_lite::io::slice all{0, n};
   const auto read = [&](const char* name) { return in.read<double>(step, name, all); };
@@ -216,13 +254,13 @@ void create_binary(sph::simulation<3>& s, const problem& problem) {
     const std::uint64_t index = block.offset + i;
     const int star = index >= n ? 1 : 0;
     const std::size_t a = order[index - std::uint64_t(star) * n];
-    // Homologous: x ~ R, m ~ M, rho ~ M / R^3, u ~ M / R (u = K rho with K ~ R^2).
+    // Homologous: x ~ R, m ~ M, rho ~ M / R^3, u ~ G M / R (u = K rho with K = 2 G R^2 / pi).
     const double q = masses[star];
     p.x = {offsets[star] + length * (x[a] - centre[0]), length * (y[a] - centre[1]), length * (z[a] - centre[2])};
     p.m = q * m[a];
     p.h = length * h[a];
     p.rho = q * rho[a] / (length * length * length);
-    p.u = q * u[a] / length;
+    p.u = q * u[a] / length * (s.physics.gravity.constant / file_G);
     p.id = index;
     p.kind = sph::particle_kind::fluid;
   });

@@ -45,7 +45,20 @@ struct problem {
   double relaxation_tolerance = 1e-4;
   double damping_time = 0.3;
   double observer_distance = 1;  ///< d of the strain (on the z axis)
-  double speed_of_light = 1;     ///< c of the strain
+  double speed_of_light = 1;     ///< c of the strain and of the radiation reaction
+  /// Binary: the 2.5PN point-mass radiation reaction on the stars after the release, until their
+  /// separation falls below radiation_reaction_cutoff R (contact).
+  bool radiation_reaction = false;
+  double radiation_reaction_cutoff = 2;
+  /// G and c from the unit keys (unit_*_in_cgs) and their CGS values instead of the keys
+  /// gravitational_constant and speed_of_light.
+  bool physical_constants = false;
+  /// Binary: the folder of cached relaxed stars (bns_star_cache.hh; empty: star_file), and the
+  /// relaxation of a star made for it (in units of t_dyn; the tolerance is relaxation_tolerance).
+  std::string star_cache;
+  double star_relaxation_time = 30;
+  double star_relaxation_min_time = 12;
+  double star_damping_time = 1;
 };
 
 const flecsi_lite::runtime::parameter_block<problem>& problem_parameters();
@@ -65,6 +78,13 @@ double dynamical_time(double mass, double radius, double gravitational_constant)
 double roche_lobe_fraction(double mass, double companion);
 /// Kepler: Omega = sqrt(G (M1 + M2) / a^3).
 double kepler_omega(const problem& problem, double gravitational_constant);
+
+/// G and c in the code units of the unit keys: G = G_cgs M_u T_u^2 / L_u^3, c = c_cgs T_u / L_u
+/// (CODATA 2018: G = 6.67430e-8 cm^3 g^-1 s^-2, c = 2.99792458e10 cm/s).
+struct code_constants {
+  double gravitational_constant = 1, speed_of_light = 1;
+};
+code_constants physical_constants_in_code_units(double mass_in_cgs, double length_in_cgs, double time_in_cgs);
 
 /// The checks of the keys and of what they imply (parameter_error naming the keys): n = 1 (the
 /// exponent 2), K derived (polytropic_constant not set), gravity on, a binary's stars apart and,

@@ -5,6 +5,7 @@ grid) as PNG frames, one per H5Part step.
 
     plot_bns.py bns_binary.statistics.txt [--output bns_orbit.png]
                 [--frames bns_binary.h5part --frame-prefix frames/bns_] [--extent 4] [--slab 0.5]
+                [--frame-times 14,22,50]   # only the steps nearest to these times
 """
 import argparse
 import math
@@ -70,8 +71,12 @@ def plot_orbit(columns, output):
     print(f"{PROGRAM}: wrote {output}")
 
 
-def plot_frames(path, prefix, extent, slab, bins=100):
+def plot_frames(path, prefix, extent, slab, bins=100, times=None):
     steps = h5part_plot.step_indices(path, PROGRAM)
+    if times:
+        # The step nearest to each wanted time (the step attributes hold the times).
+        step_times = [h5part_plot.read_step(path, index, PROGRAM)[0] for index in steps]
+        steps = sorted({steps[int(np.argmin(np.abs(np.array(step_times) - wanted)))] for wanted in times})
     directory = os.path.dirname(prefix)
     if directory:
         os.makedirs(directory, exist_ok=True)
@@ -111,6 +116,7 @@ def main():
     parser.add_argument("--frame-prefix", default="bns_frame_", help="frames are PREFIX0000.png, ...")
     parser.add_argument("--extent", type=float, default=4.0, help="the maps show |x|, |y| < extent")
     parser.add_argument("--slab", type=float, default=0.5, help="particles with |z| < slab enter the maps")
+    parser.add_argument("--frame-times", help="comma-separated times: frames of the nearest steps only")
     args = parser.parse_args()
     columns = read_statistics(args.statistics)
     plot_orbit(columns, args.output)
@@ -121,7 +127,8 @@ def main():
             print(f"{PROGRAM}: after the release: separation {a[0]:.6g} -> {a[-1]:.6g}, "
                   f"largest |a / a0 - 1| = {np.max(np.abs(a / a[0] - 1)):.3e}")
     if args.frames:
-        plot_frames(args.frames, args.frame_prefix, args.extent, args.slab)
+        times = [float(v) for v in args.frame_times.split(",")] if args.frame_times else None
+        plot_frames(args.frames, args.frame_prefix, args.extent, args.slab, times=times)
 
 
 if __name__ == "__main__":

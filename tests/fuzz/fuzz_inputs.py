@@ -54,7 +54,7 @@ SMALL_SIZES = {"sod_1d.par": ("particles", 40), "sod_2d.par": ("particles", 12),
                "dam_break_3d.par": ("particles", 4), "couette.par": ("particles", 8),
                "poiseuille.par": ("particles", 8), "still_tank.par": ("particles", 8)}
 # Parameter files that need another file first (bns binaries: a relaxed star's star_file).
-NEEDS_FILES = ("binary_stable.par", "merger.par")
+NEEDS_FILES = ("binary_stable.par", "merger.par", "inspiral.par")
 APPS = ("sod", "sedov", "evrard", "cold_collapse", "fluid", "bns")
 
 
