@@ -155,7 +155,15 @@ class runner:
         self.quiet = ["--set", "progress_every=0", "--set", "diagnostics_every=0", "--no-timers"]
 
     def run(self, arguments, folder):
-        """(status or 'timeout', stderr text) of one app run in `folder`."""
+        """(status or 'timeout', stderr text) of one app run in `folder`. A run whose MPI runtime
+        failed to start (Open MPI's singleton start fails now and then on a loaded machine, exit 1
+        from MPI_Init_thread before the app reads anything) is started once more."""
+        status, error = self.run_once(arguments, folder)
+        if status == 1 and "An error occurred in MPI_Init_thread" in error:
+            status, error = self.run_once(arguments, folder)
+        return status, error
+
+    def run_once(self, arguments, folder):
         process = subprocess.Popen(self.launcher + arguments, cwd=folder, stdout=subprocess.DEVNULL,
                                    stderr=subprocess.PIPE, env=self.environment,
                                    preexec_fn=None if self.options.no_limit else limit_address_space,
