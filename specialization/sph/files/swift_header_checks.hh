@@ -7,7 +7,7 @@
 #pragma once
 
 #include "flecsi_lite/io.hh"
-#include "flecsi_lite/topology/ntree/ntree.hh"
+#include "flecsi_lite/topology/ntree.hh"
 
 #include <cstdint>
 #include <sstream>
