@@ -25,6 +25,9 @@ metadata_listing check_readable_hdf5(const std::string& path, const std::string&
   if (!std::filesystem::exists(status)) throw file_error("cannot open '" + path + "': no such file");
   if (std::filesystem::is_directory(status))
     throw file_error("cannot open '" + path + "': it is a directory, not " + kind);
+  // Opening a fifo waits for a writer for ever (fuzz campaign, seed 7: restart_file = a fifo).
+  if (!std::filesystem::is_regular_file(status))
+    throw file_error("cannot open '" + path + "': it is not a regular file (a fifo, socket or device), not " + kind);
   std::ifstream probe(path, std::ios::binary);
   if (!probe) throw file_error("cannot read '" + path + "': " + std::strerror(errno));
   const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
