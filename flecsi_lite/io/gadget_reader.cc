@@ -12,10 +12,6 @@
 #include "flecsi_lite/io/io_error.hh"
 #include "flecsi_lite/util/edit_distance.hh"
 
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <optional>
@@ -25,11 +21,6 @@
 namespace flecsi_lite::io {
 
 namespace {
-herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* names) {
-  static_cast<std::vector<std::string>*>(names)->emplace_back(name);
-  return 0;
-}
-
 bool has_link(hid_t location, const std::string& name) {
   return !name.empty() && H5Lexists(location, name.c_str(), H5P_DEFAULT) > 0;
 }
@@ -52,21 +43,15 @@ bool gadget_reader::has_gadget_layout(const std::string& path, MPI_Comm comm) {
   if (rank_of(comm) == 0) {
     hdf5_quiet_scope quiet;
     std::error_code error;
-    // A file whose metadata would crash libhdf5 (h5part_precheck.hh) is left to the H5Part
-    // reader, which reports it.
-    // The look itself runs in a forked child as well: on a damaged file libhdf5 1.10 can corrupt
-    // the heap on an error path without crashing at once, and this process goes on to open the
-    // file collectively (fuzz.inputs, h5part case 2 of seed 13 crashed there).
-    if (std::filesystem::is_regular_file(path, error) && H5Fis_hdf5(path.c_str()) > 0 &&
-        h5part::metadata_crash_check(path).empty()) {
-      const pid_t child = fork();
-      if (child == 0) {
-        for (int signal_number : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL}) signal(signal_number, SIG_DFL);
-        auto file = file_handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
-        _exit(file && has_link(file.get(), "Header") && has_link(file.get(), "PartType0") ? 1 : 0);
-      }
-      int status = 0;
-      found = child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 1;
+    // The groups come from the forked check (h5part_precheck.hh): this process iterates no link
+    // table. A file the check finds damaged is left to the H5Part reader, which reports it.
+    if (std::filesystem::is_regular_file(path, error) && H5Fis_hdf5(path.c_str()) > 0) {
+      const auto check = h5part::check_metadata(path);
+      const auto& groups = check.listing.groups;
+      const auto has_group = [&](const char* name) {
+        return std::find(groups.begin(), groups.end(), name) != groups.end();
+      };
+      found = check.problem.empty() && has_group("Header") && has_group("PartType0");
     }
   }
   MPI_Bcast(&found, 1, MPI_INT, 0, comm);
@@ -92,20 +77,19 @@ std::string gadget_reader::text_attribute(const std::string& path, const std::st
 gadget_reader::gadget_reader(std::string path, std::string group, std::map<std::string, column> columns, MPI_Comm comm)
     : path_(std::move(path)), group_(std::move(group)), columns_(std::move(columns)), comm_(comm) {
   hdf5_quiet_scope quiet;
-  file_ = open_for_reading_collectively(path_, comm_, "a SWIFT snapshot");
+  auto opened = open_for_reading_collectively(path_, comm_, "a SWIFT snapshot");
+  file_ = std::move(opened.file);
+  const auto& groups = opened.listing.groups;
   agree(comm_, [&] {
-    if (!has_link(file_.get(), group_))
+    if (std::find(groups.begin(), groups.end(), group_) == groups.end())
       throw missing_dataset_error("'" + path_ + "' has no group " + group_ + " (its particles)");
     particles_ = group_handle(H5Gopen2(file_.get(), group_.c_str(), H5P_DEFAULT));
     if (!particles_) throw file_error("cannot open " + group_ + " of '" + path_ + "'" + hdf5_reason());
-    std::vector<std::string> links;
-    hsize_t position = 0;
-    if (H5Literate(particles_.get(), H5_INDEX_NAME, H5_ITER_INC, &position, collect_link, &links) < 0)
-      throw file_error("cannot list the datasets of " + group_ + " of '" + path_ + "'" + hdf5_reason());
     std::string first;
-    for (const auto& name : links) {
+    // The datasets as the forked check listed them (metadata_listing.hh): no link iteration here.
+    for (const auto& name : opened.listing.datasets_of(group_)) {
       auto dataset = dataset_handle(H5Dopen2(particles_.get(), name.c_str(), H5P_DEFAULT));
-      if (!dataset) continue;  // a subgroup
+      if (!dataset) throw file_error("cannot open " + describe(name) + hdf5_reason());
       datasets_.push_back(name);
       const auto extent = extent_of(dataset.get(), describe(name));
       auto type = datatype_handle(H5Dget_type(dataset.get()));

@@ -34,16 +34,14 @@ std::string describe_steps(const std::vector<std::int64_t>& steps) {
   return steps.size() > 8 ? list + ", ..." : list;
 }
 
-herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* names) {
-  static_cast<std::vector<std::string>*>(names)->emplace_back(name);
-  return 0;
-}
 }  // namespace
 
 h5part_reader::h5part_reader(std::string path, MPI_Comm comm) : path_(std::move(path)), comm_(comm) {
   hdf5_quiet_scope quiet;
-  file_ = open_for_reading_collectively(path_, comm_, "an H5Part file");
-  agree(comm_, [&] { steps_ = h5part::step_indices(file_.get()); });
+  auto opened = open_for_reading_collectively(path_, comm_, "an H5Part file");
+  file_ = std::move(opened.file);
+  listing_ = std::move(opened.listing);
+  steps_ = h5part::step_indices(listing_.groups);
 }
 
 h5part_reader::~h5part_reader() {
@@ -79,20 +77,10 @@ hdf5_handle h5part_reader::open_step(std::int64_t step) const {
   return group;
 }
 
-namespace {
-// Names of the datasets directly in `group`, in name order.
-std::vector<std::string> dataset_names(hid_t group, const std::string& where) {
-  std::vector<std::string> links, names;
-  hsize_t position = 0;
-  if (H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, &position, collect_link, &links) < 0)
-    throw file_error("cannot list the datasets of " + where + hdf5_reason());
-  for (const auto& link : links) {
-    auto object = object_handle(H5Oopen(group, link.c_str(), H5P_DEFAULT));
-    if (object && H5Iget_type(object.get()) == H5I_DATASET) names.push_back(link);
-  }
-  return names;
+// Names of the datasets of the step, in name order, as the forked check listed them.
+const std::vector<std::string>& h5part_reader::dataset_names(std::int64_t step) const {
+  return listing_.datasets_of(h5part::step_group_name(step));
 }
-}  // namespace
 
 hdf5_handle h5part_reader::open_dataset(std::int64_t step, const std::string& name) const {
   auto group = open_step(step);
@@ -100,7 +88,7 @@ hdf5_handle h5part_reader::open_dataset(std::int64_t step, const std::string& na
     auto object = object_handle(H5Oopen(group.get(), name.c_str(), H5P_DEFAULT));
     if (object && H5Iget_type(object.get()) == H5I_DATASET) return object;
   }
-  const auto names = dataset_names(group.get(), describe_step(step));
+  const auto& names = dataset_names(step);
   std::string message = describe_step(step) + " has no dataset '" + name + "'";
   if (const auto near = util::nearest_name(name, names); !near.empty()) message += "; did you mean '" + near + "'?";
   std::string list;
@@ -126,7 +114,7 @@ std::uint64_t h5part_reader::checked_length(std::int64_t step) const {
   auto group = open_step(step);
   std::optional<std::uint64_t> length;
   std::string first;
-  for (const auto& name : dataset_names(group.get(), describe_step(step))) {
+  for (const auto& name : dataset_names(step)) {
     auto dataset = dataset_handle(H5Dopen2(group.get(), name.c_str(), H5P_DEFAULT));
     auto space = dataspace_handle(dataset ? H5Dget_space(dataset.get()) : H5I_INVALID_HID);
     if (!space) throw file_error("cannot open " + describe_dataset(step, name) + hdf5_reason());
@@ -215,7 +203,10 @@ step_info h5part_reader::step_information(std::int64_t step) const {
 std::vector<std::string> h5part_reader::datasets(std::int64_t step) const {
   hdf5_quiet_scope quiet;
   std::vector<std::string> names;
-  agree(comm_, [&] { names = dataset_names(open_step(step).get(), describe_step(step)); });
+  agree(comm_, [&] {
+    open_step(step);  // missing_step_error
+    names = dataset_names(step);
+  });
   return names;
 }
 

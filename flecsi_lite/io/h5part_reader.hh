@@ -12,6 +12,7 @@
 
 #include "flecsi_lite/io/attribute_value.hh"
 #include "flecsi_lite/io/detail/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/metadata_listing.hh"
 #include "flecsi_lite/io/element_type.hh"
 #include "flecsi_lite/io/particle_partition.hh"
 #include "flecsi_lite/io/step_info.hh"
@@ -88,6 +89,7 @@ class h5part_reader {
   hdf5_handle open_step(std::int64_t step) const;  // throws missing_step_error
   hdf5_handle open_dataset(std::int64_t step, const std::string& name) const;
   std::uint64_t checked_length(std::int64_t step) const;  // no MPI: for use inside agree()
+  const std::vector<std::string>& dataset_names(std::int64_t step) const;
   void check_storable(hid_t dataset, std::uint64_t extent, const std::string& what) const;
   std::string describe_step(std::int64_t step) const;
   std::string describe_dataset(std::int64_t step, const std::string& name) const;
@@ -96,6 +98,7 @@ class h5part_reader {
   std::string path_;
   MPI_Comm comm_;
   hdf5_handle file_;
+  metadata_listing listing_;  // the file's groups and datasets, from rank 0's forked check
   std::vector<std::int64_t> steps_;
   mutable std::map<std::int64_t, std::uint64_t> step_lengths_;  // checked lengths, by step
 };

@@ -94,6 +94,16 @@ code, output = run(["in.par"] + SMALL + ["--trace", "trace.json"], timeout=30)
 os.chdir(top)
 check(code == 2 and "cannot write the --trace file 'trace.json'" in output,
       f"trace fifo: refused at start-up (exit {code}), no hang")
+# A fifo as restart_file or initial_data is refused (exit 3), not opened: opening it waited for a
+# writer for ever (the fuzz campaign of seed 7 found it).
+for key in ("restart_file", "initial_data"):
+    folder = fresh("run_files_read_fifo_" + key)
+    os.mkfifo(os.path.join(folder, "input.h5part"))
+    os.chdir(folder)
+    code, output = run(["in.par"] + SMALL + ["--set", key + "=input.h5part"], timeout=30)
+    os.chdir(top)
+    check(code == 3 and "cannot open 'input.h5part': it is not a regular file" in output,
+          f"{key} fifo: refused (exit {code}), no hang")
 # A stop file that is not a regular file is refused, and stays what it was.
 folder = fresh("run_files_stop_folder")
 os.mkdir(os.path.join(folder, "stop_here"))

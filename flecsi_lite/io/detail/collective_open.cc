@@ -13,30 +13,38 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <utility>
 
 namespace flecsi_lite::io {
 
 namespace {
 // Rank 0's look at the file before HDF5 opens it, for a precise message.
-void check_readable_hdf5(const std::string& path, const std::string& kind) {
+metadata_listing check_readable_hdf5(const std::string& path, const std::string& kind) {
   std::error_code error;
   const auto status = std::filesystem::status(path, error);
   if (!std::filesystem::exists(status)) throw file_error("cannot open '" + path + "': no such file");
   if (std::filesystem::is_directory(status))
     throw file_error("cannot open '" + path + "': it is a directory, not " + kind);
+  // Opening a fifo waits for a writer for ever (fuzz campaign, seed 7: restart_file = a fifo).
+  if (!std::filesystem::is_regular_file(status))
+    throw file_error("cannot open '" + path + "': it is not a regular file (a fifo, socket or device), not " + kind);
   std::ifstream probe(path, std::ios::binary);
   if (!probe) throw file_error("cannot read '" + path + "': " + std::strerror(errno));
   const htri_t is_hdf5 = H5Fis_hdf5(path.c_str());
   if (is_hdf5 == 0) throw file_error("'" + path + "' is not an HDF5 file (no HDF5 signature)");
   if (is_hdf5 < 0) throw file_error("cannot read '" + path + "'" + hdf5_reason());
-  if (const std::string crash = h5part::metadata_crash_check(path); !crash.empty()) throw file_error(crash);
+  auto check = h5part::check_metadata(path);
+  if (!check.problem.empty()) throw file_error(check.problem);
+  return std::move(check.listing);
 }
 }  // namespace
 
-hdf5_handle open_for_reading_collectively(const std::string& path, MPI_Comm comm, const std::string& kind) {
+opened_file open_for_reading_collectively(const std::string& path, MPI_Comm comm, const std::string& kind) {
+  metadata_listing listing;
   agree(comm, [&] {
-    if (rank_of(comm) == 0) check_readable_hdf5(path, kind);
+    if (rank_of(comm) == 0) listing = check_readable_hdf5(path, kind);
   });
+  listing = broadcast_listing(listing, 0, comm);
   const std::string name = mpi_io_name(path);  // the same verdict on every rank
   auto access = mpio_file_access(comm);
   auto file = file_handle(H5Fopen(name.c_str(), H5F_ACC_RDONLY, access.get()));
@@ -50,7 +58,7 @@ hdf5_handle open_for_reading_collectively(const std::string& path, MPI_Comm comm
     file.release();  // a parallel close on only the ranks that opened it would never return
     throw;
   }
-  return file;
+  return {std::move(file), std::move(listing)};
 }
 
 }  // namespace flecsi_lite::io

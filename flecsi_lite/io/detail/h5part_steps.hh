@@ -5,11 +5,15 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace flecsi_lite::io::h5part {
 
-/// Sorted step indices; other root objects are ignored. Throws io_error when HDF5 fails.
+/// Sorted step indices of the root groups named `groups`; other names are ignored.
+std::vector<std::int64_t> step_indices(const std::vector<std::string>& groups);
+/// The same for a file this process wrote (readers take the names from the forked listing,
+/// metadata_listing.hh). Throws io_error when HDF5 fails.
 std::vector<std::int64_t> step_indices(hid_t file);
 
 }  // namespace flecsi_lite::io::h5part

@@ -23,13 +23,16 @@ inline void check_initial_ids(const flecsi_lite::io::column_source& in) {
   if (!in.has_column("id")) return;
   const std::string where = in.where() + " dataset 'id'";
   const auto type = in.column_type("id");
-  std::vector<std::uint64_t> ids(in.block().count);
+  // block() is collective: taken once here, never inside refuse(), which only the ranks holding
+  // a bad id run (calling it there left the other ranks in the next collective: a hang at 2 ranks).
+  const io::slice mine = in.block();
+  std::vector<std::uint64_t> ids(mine.count);
   std::optional<io::failure_record> failed;
   const auto refuse = [&](std::size_t a, const std::string& value) {
     if (failed) return;
-    failed = io::failure_record{io::failure::layout, where + " holds " + value + " for the particle at index " +
-                                                       std::to_string(in.block().offset + a) +
-                                                       ": ids must be whole numbers >= 0"};
+    failed =
+      io::failure_record{io::failure::layout, where + " holds " + value + " for the particle at index " +
+                                                std::to_string(mine.offset + a) + ": ids must be whole numbers >= 0"};
   };
   if (type == io::element_type::float64 || type == io::element_type::float32) {
     const auto values = in.read<double>("id");

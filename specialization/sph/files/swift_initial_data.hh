@@ -7,23 +7,32 @@
 //              SmoothingLength, InternalEnergy
 //   optional   Velocities (N x 3; 0), ParticleIDs (the index), Density (an initial guess only)
 //
+// or a snapshot's plural names (SmoothingLengths, InternalEnergies, Densities): SWIFT's snapshots
+// and ours (snapshot_output.hh) read back as initial data; ours with walls hold them in PartType2
+// and are refused as particles of another type (their H5Part output holds the walls' kind).
+//
 // read in parallel (each rank its block, io::gadget_reader) and checked by the same fields' rules
 // as H5Part initial data (particle_input.hh). SmoothingLength is taken as our h (support 2 h):
 // with adaptive_smoothing_length it is only the first guess of the density iteration; SWIFT's h
 // is support / kernel_gamma (Dehnen & Aly 2012), 2 / kernel_gamma of ours. Refused, naming the
 // file and the attribute: another dimension, several files, entropies instead of energies
 // (Flag_Entropy_ICs), particles of other types, and a Units group other than the run's units.
-// Header/BoxSize and Time are not used: the app's problem sets the domain, the run starts at 0.
+// Header fields that disagree with the data (NumPart_ThisFile, MassTable, a PartType1..5 group
+// without its count) are refused (swift_header_checks.hh). Header/BoxSize and Time are not used:
+// the app's problem sets the domain, the run starts at 0; particles outside the run's periodic box
+// (SWIFT's [0, BoxSize) against a box centred elsewhere) are refused with the box and the shift.
 #pragma once
 
 #include "specialization/sph/files/particle_input.hh"
 #include "specialization/sph/files/snapshot_settings.hh"
+#include "specialization/sph/files/swift_header_checks.hh"
 
 #include "flecsi_lite/io.hh"
 
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -31,14 +40,17 @@
 
 namespace flecsph::sph {
 
-/// Our field datasets (fields.hh, the tree's x y z id m h) in SWIFT's initial-conditions names.
+/// Our field datasets (fields.hh, the tree's x y z id m h) in SWIFT's initial-conditions names,
+/// or (snapshot_names) in the plural names of SWIFT's snapshots, which ours share (SWIFT's
+/// src/hydro/*/hydro_io.h: SmoothingLengths, InternalEnergies, Densities).
 template<int D>
-std::map<std::string, flecsi_lite::io::gadget_reader::column> swift_initial_columns() {
-  std::map<std::string, flecsi_lite::io::gadget_reader::column> columns{{"m", {"Masses"}},
-                                                                        {"h", {"SmoothingLength"}},
-                                                                        {"u", {"InternalEnergy"}},
-                                                                        {"id", {"ParticleIDs"}},
-                                                                        {"rho", {"Density"}}};
+std::map<std::string, flecsi_lite::io::gadget_reader::column> swift_initial_columns(bool snapshot_names = false) {
+  std::map<std::string, flecsi_lite::io::gadget_reader::column> columns{
+    {"m", {"Masses"}},
+    {"h", {snapshot_names ? "SmoothingLengths" : "SmoothingLength"}},
+    {"u", {snapshot_names ? "InternalEnergies" : "InternalEnergy"}},
+    {"id", {"ParticleIDs"}},
+    {"rho", {snapshot_names ? "Densities" : "Density"}}};
   const char* axes[] = {"x", "y", "z"};
   const char* velocities[] = {"vx", "vy", "vz"};
   for (int k = 0; k < D; ++k) {
@@ -92,6 +104,7 @@ void check_swift_header(const flecsi_lite::io::gadget_reader& in, const unit_sys
              std::to_string(type) + " (Header/NumPart_Total[" + std::to_string(type) +
              "]): only gas (PartType0) initial conditions are read");
   }
+  check_swift_counts_and_masses(in);
   if (!in.has_group("Units")) return;  // SWIFT's internal units are then the file's
   const struct {
     const char* name;
@@ -115,13 +128,26 @@ void check_swift_header(const flecsi_lite::io::gadget_reader& in, const unit_sys
 /// the run's `units`. The tree settings must be set. Returns the particle count.
 template<int D>
 std::uint64_t read_swift_initial_data(simulation<D>& s, const std::string& path, const unit_system& units) {
-  const flecsi_lite::io::gadget_reader in(path, "PartType0", swift_initial_columns<D>());
+  using flecsi_lite::io::gadget_reader;
+  auto file = std::make_unique<const gadget_reader>(path, "PartType0", swift_initial_columns<D>());
+  // A snapshot (SWIFT's or ours) names h and u in the plural: read it as initial conditions too.
+  if (!file->has_column("h") && !file->has_column("u")) {
+    file.reset();
+    file = std::make_unique<const gadget_reader>(path, "PartType0", swift_initial_columns<D>(true));
+  }
+  const gadget_reader& in = *file;
   detail::check_swift_header<D>(in, units);
   if (in.particle_count() == 0) throw std::invalid_argument(in.where() + " holds no particles");
   create_particles(s, in.block().count);
   detail::check_initial_ids(in);  // before the fields, as read_particles
   flecsi_lite::data::read_fields(*s.particles, in, flecsi_lite::data::role::initial);
-  detail::check_particle_set(s, in.where());
+  try {
+    detail::check_particle_set(s, in.where());
+  } catch (const std::invalid_argument& e) {
+    // The tree's refusal says nothing of the file: say which box and what to change.
+    if (std::string(e.what()).rfind("ntree: particles outside the periodic box", 0) != 0) throw;
+    throw std::invalid_argument(detail::outside_periodic_box<D>(in, s.tree_settings));
+  }
   return in.particle_count();
 }
 
