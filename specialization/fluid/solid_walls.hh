@@ -54,18 +54,23 @@ wall_sums<D> wall_sums_of(const sph::neighbour_walk<D>& walk, std::size_t a, dou
   constexpr std::size_t W = simd::lanes<T>;
   const sph::kernel_at<Kernel> kernel(h_a);
   const double reach2 = physics::kernel_support * physics::kernel_support * h_a * h_a;
-  const T lane = simd::generate<T>([](std::size_t i) { return double(i); }), zero = 0.0;
+  const T zero = 0.0;
   simd::ordered_sum<T> weight, pressure, force_term, velocity[D];
   const vector<D> x_a = in.x[a];
   const std::size_t first = walk.begin(a), end = walk.end(a);
   for (std::size_t j0 = first; j0 < end; j0 += W) {
+    // Most of a wall particle's neighbours are walls: their packs are skipped before any arithmetic.
+    bool fluid[W], any_fluid = false;
+    for (std::size_t i = 0; i < W; ++i) {
+      fluid[i] = j0 + i < end && in.kind[walk.neighbour(j0 + i)] == sph::particle_kind::fluid;
+      any_fluid |= fluid[i];
+    }
+    if (!any_fluid) continue;
     std::size_t b[W];
     T r[D];
     const T r2 = walk.separations(j0, end, x_a, in.x, b, r);
-    bool fluid[W];
-    for (std::size_t i = 0; i < W; ++i) fluid[i] = in.kind[b[i]] == sph::particle_kind::fluid;
     const T fluid_lane = simd::generate<T>([&](std::size_t i) { return fluid[i] ? 1.0 : 0.0; });
-    const auto pair = (lane < double(end - j0)) && (fluid_lane != 0.0) && (r2 < reach2);
+    const auto pair = (fluid_lane != 0.0) && (r2 < reach2);
     if (!simd::any_lane(pair)) continue;
     // Fluid values only: the other walls' values are being written by this task.
     const auto gather = [&](const double* field) {
