@@ -224,7 +224,7 @@ void place_gauges(fluid_run<D>& s) {
 template<int D>
 std::string gauge_row(fluid_run<D>& s) {
   const double front = surge_front(s);
-  const auto readings = fl::read_gauges<D>(s, s.gauge_points);
+  const auto readings = fl::read_gauges<D>(s, s.gauge_points, s.gauge_keys.smoothing);
   std::ostringstream row;
   row << std::setprecision(12) << s.step << "," << s.time << ",";
   if (std::isfinite(front))
@@ -253,7 +253,9 @@ void open_gauges(fluid_run<D>& s) {
     const auto& q = s.gauge_points[g];
     header << "# gauge " << g + 1 << ": " << q.size() << " samples from (" << q.front()[0] << ", " << q.front()[1]
            << ") to (" << q.back()[0] << ", " << q.back()[1] << ") m; p_" << g + 1
-           << " the mean Shepard-interpolated pressure (Pa; dry samples 0), v its velocity (m/s)\n";
+           << " the mean Shepard-interpolated pressure (Pa; dry samples 0), v its velocity (m/s)";
+    if (s.gauge_keys.smoothing != 1) header << "; smoothing length " << s.gauge_keys.smoothing << " h";
+    header << "\n";
   }
   header << "# step,t,front_x";
   const char* axes[] = {"vx", "vy", "vz"};
