@@ -38,6 +38,9 @@ class GaugeFile:
         if not found or columns is None:
             sys.exit("dam_break_fronts: '%s' is not a gauge file of the fluid app (gauge_file)" % path)
         self.length, self.dx, self.rho0, self.g = (float(v) for v in found.groups())
+        with open(path) as f:  # gauge_smoothing, named in the gauges' header lines when not 1
+            smoothing = re.search(r"smoothing length ([^ ]+) h", f.read(4096))
+        self.smoothing = float(smoothing.group(1)) if smoothing else 1.0
         data = np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
         if data.shape[0] < 2:
             sys.exit("dam_break_fronts: '%s' has fewer than 2 rows" % path)
