@@ -38,6 +38,9 @@ class GaugeFile:
         if not found or columns is None:
             sys.exit("dam_break_fronts: '%s' is not a gauge file of the fluid app (gauge_file)" % path)
         self.length, self.dx, self.rho0, self.g = (float(v) for v in found.groups())
+        with open(path) as f:  # gauge_smoothing, named in the gauges' header lines when not 1
+            smoothing = re.search(r"smoothing length ([^ ]+) h", f.read(4096))
+        self.smoothing = float(smoothing.group(1)) if smoothing else 1.0
         data = np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
         if data.shape[0] < 2:
             sys.exit("dam_break_fronts: '%s' has fewer than 2 rows" % path)
@@ -115,14 +118,16 @@ def main():
     parser.add_argument("against", choices=["reference", "martin-moyce"])
     parser.add_argument("runs", nargs="+")
     parser.add_argument("--tank-length", type=float, default=5.366)
+    parser.add_argument("--window", nargs=2, type=float, default=[1.0, 2.3],
+                        help="reference: the span of t sqrt(g/H) compared (the issue's: 1.0 2.3)")
     args = parser.parse_args()
     for path in args.runs:
         run = GaugeFile(path)
         if args.against == "reference":
-            mean, largest, mine, theirs = against_reference(run, args.tank_length)
-            print("%s: dx = H/%.0f, front x_f/2H over 1 <= t sqrt(g/H) <= 2.3 against TrixiParticles H/400: "
+            mean, largest, mine, theirs = against_reference(run, args.tank_length, tuple(args.window))
+            print("%s: dx = H/%.0f, front x_f/2H over %g <= t sqrt(g/H) <= %g against TrixiParticles H/400: "
                   "mean relative error %.4f, largest %.4f; wall arrival t sqrt(g/H) = %.3f (reference %.3f)" %
-                  (path, run.length / run.dx, mean, largest, mine, theirs))
+                  (path, run.length / run.dx, args.window[0], args.window[1], mean, largest, mine, theirs))
         else:
             raw, shift, mean = against_martin_moyce(run)
             print("%s: dx = L/%.0f, against Martin & Moyce Table 2 (9 points, 1 <= T <= 2.8): raw errors %s "

@@ -56,7 +56,6 @@ struct fluid_run : fl::fluid_state<D> {
 
 /// What the measuring task sums and bounds over the fluid particles.
 struct sample {
-  double front = -std::numeric_limits<double>::max();
   double min_x = std::numeric_limits<double>::max(), max_x = -std::numeric_limits<double>::max();
   double min_y = std::numeric_limits<double>::max();
   double speed = 0, density_deviation = 0, channel_error = 0;
@@ -64,7 +63,6 @@ struct sample {
 };
 struct sample_reduction {
   static sample combine(sample a, const sample& b) {
-    a.front = std::max(a.front, b.front);
     a.min_x = std::min(a.min_x, b.min_x), a.max_x = std::max(a.max_x, b.max_x), a.min_y = std::min(a.min_y, b.min_y);
     a.speed = std::max(a.speed, b.speed);
     a.density_deviation = std::max(a.density_deviation, b.density_deviation);
@@ -105,7 +103,6 @@ sample measure_task(sample_input in, sph::ro<sph::vector<D>> x, sph::ro<sph::vec
   for (std::size_t a = 0; a < x.size(); ++a) {
     if (kind(a) != sph::particle_kind::fluid) continue;
     const auto& p = x(a);
-    s.front = std::max(s.front, p[0]);
     s.min_x = std::min(s.min_x, p[0]), s.max_x = std::max(s.max_x, p[0]), s.min_y = std::min(s.min_y, p[1]);
     double v2 = 0, gx = 0;
     for (int k = 0; k < D; ++k) v2 += v(a)[k] * v(a)[k], gx += in.fluid.body_force[k] * p[k];
@@ -127,6 +124,19 @@ double channel_speed_scale(const fluid_run<D>& s) {
   return s.layout.speed_scale;
 }
 
+/// The surge front (surge_front.hh): the largest x of a fluid particle at most front_height above
+/// the floor with at least two fluid neighbours within 2 dx, plus dx/2; NaN when none qualifies.
+template<int D>
+double surge_front(fluid_run<D>& s) {
+  using f = sph::fields<D>;
+  auto& p = *s.particles;
+  const fl::surge_front_settings settings{s.layout.tank_lo[1], s.gauge_keys.front_height * s.problem.length,
+                                          2 * s.layout.dx};
+  const double x =
+    reduce<fl::surge_front_task<D>, reduction::max>(s.neighbours, settings, f::position()(p), f::kind(p)).get();
+  return x > -std::numeric_limits<double>::max() ? x + 0.5 * s.layout.dx : std::numeric_limits<double>::quiet_NaN();
+}
+
 template<int D>
 void measure(fluid_run<D>& s) {
   using f = sph::fields<D>;
@@ -136,7 +146,7 @@ void measure(fluid_run<D>& s) {
                                                              f::density(p), f::pressure(p), f::kind(p))
                      .get();
   const double error = r.channel_error / channel_speed_scale(s);
-  s.series.push_back({s.time, r.front, r.energy.value(), r.density_deviation, r.speed, error});
+  s.series.push_back({s.time, surge_front(s), r.energy.value(), r.density_deviation, r.speed, error});
   s.min_x = std::min(s.min_x, r.min_x), s.max_x = std::max(s.max_x, r.max_x), s.min_y = std::min(s.min_y, r.min_y);
   s.bottom_pressure = r.bottom_count.value() > 0 ? r.bottom_pressure.value() / r.bottom_count.value() : 0;
   // Channels: the first step at or after each check time (compared with the series at that time).
@@ -213,18 +223,12 @@ void place_gauges(fluid_run<D>& s) {
 /// One row of the gauge file: step, t, the surge front (surge_front.hh), each gauge's P and v.
 template<int D>
 std::string gauge_row(fluid_run<D>& s) {
-  using f = sph::fields<D>;
-  auto& p = *s.particles;
-  const fl::surge_front_settings front_settings{s.layout.tank_lo[1], s.gauge_keys.front_height * s.problem.length,
-                                                2 * s.layout.dx};
-  auto front =
-    reduce<fl::surge_front_task<D>, reduction::max>(s.neighbours, front_settings, f::position()(p), f::kind(p));
-  const auto readings = fl::read_gauges<D>(s, s.gauge_points);
-  const double x = front.get();
+  const double front = surge_front(s);
+  const auto readings = fl::read_gauges<D>(s, s.gauge_points, s.gauge_keys.smoothing);
   std::ostringstream row;
   row << std::setprecision(12) << s.step << "," << s.time << ",";
-  if (x > -std::numeric_limits<double>::max())
-    row << x + 0.5 * s.layout.dx;
+  if (std::isfinite(front))
+    row << front;
   else
     row << "nan";
   for (const auto& r : readings) {
@@ -249,7 +253,9 @@ void open_gauges(fluid_run<D>& s) {
     const auto& q = s.gauge_points[g];
     header << "# gauge " << g + 1 << ": " << q.size() << " samples from (" << q.front()[0] << ", " << q.front()[1]
            << ") to (" << q.back()[0] << ", " << q.back()[1] << ") m; p_" << g + 1
-           << " the mean Shepard-interpolated pressure (Pa; dry samples 0), v its velocity (m/s)\n";
+           << " the mean Shepard-interpolated pressure (Pa; dry samples 0), v its velocity (m/s)";
+    if (s.gauge_keys.smoothing != 1) header << "; smoothing length " << s.gauge_keys.smoothing << " h";
+    header << "\n";
   }
   header << "# step,t,front_x";
   const char* axes[] = {"vx", "vy", "vz"};
@@ -267,7 +273,7 @@ void write_gauges(fluid_run<D>& s) {
   if (s.gauges.is_open() && s.step % s.gauge_keys.every == 0) s.gauges.write(gauge_row(s));
 }
 
-/// The front Z/L (the largest fluid x plus half a spacing) at time T = t sqrt(2 g / L).
+/// The surge front Z/L (surge_front.hh) at time T = t sqrt(2 g / L), interpolated in time.
 template<int D>
 double front_at(const fluid_run<D>& s, double T) {
   const double scale = std::sqrt(-2 * s.fluid.body_force[1] / s.problem.length);
@@ -276,7 +282,7 @@ double front_at(const fluid_run<D>& s, double T) {
     if (T1 >= T) {
       const double w = T1 > T0 ? (T - T0) / (T1 - T0) : 1;
       const double z = (1 - w) * s.series[i - 1].front + w * s.series[i].front;
-      return (z + 0.5 * s.layout.dx) / s.problem.length;
+      return z / s.problem.length;
     }
   }
   return std::numeric_limits<double>::quiet_NaN();
@@ -333,7 +339,7 @@ void report(fluid_run<D>& s) {
       break;
     case problem_type::dam_break: {
       if (s.problem.column_width != 1 || s.problem.column_height != 2) {
-        line << "; largest fluid x " << s.series.back().front << " (Martin & Moyce's column is 1 x 2: "
+        line << "; surge front " << s.series.back().front << " (Martin & Moyce's column is 1 x 2: "
              << "apps/fluid/dam_break_fronts.py reads the gauge file)";
         break;
       }
@@ -349,7 +355,7 @@ void report(fluid_run<D>& s) {
   const std::string path = app::beside_output(s.files.output_file, s.program, ".series.txt");
   std::ofstream out(path);
   out << "# " << s.program << " " << fluid_app::problem_names().name(s.problem.type) << ": L = " << s.problem.length
-      << ", dx = " << s.layout.dx << ", g = " << g << "\n# t front_x mechanical_energy max|rho/rho0-1| max_speed "
+      << ", dx = " << s.layout.dx << ", g = " << g << "\n# t surge_front mechanical_energy max|rho/rho0-1| max_speed "
       << "max|v-v_exact|/v_max\n";
   out << std::setprecision(10);
   for (const auto& row : s.series)

@@ -19,12 +19,15 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def front(path):
+    """T and Z / L of a run's series: its column surge_front (surge_front.hh, dx/2 included), or in
+    a series written before that operator, the largest fluid x plus dx/2."""
     with open(path) as f:
-        header = f.readline()
-    if "dx = " in header:  # the fluid app's series: t and the largest fluid x
+        header, columns = f.readline(), f.readline()
+    if "dx = " in header:  # the fluid app's series
         found = {k: float(re.search(k + r" = ([0-9.eE+-]+)", header).group(1)) for k in ("L", "dx", "g")}
         s = np.loadtxt(path)
-        return s[:, 0] * np.sqrt(2 * found["g"] / found["L"]), (s[:, 1] + 0.5 * found["dx"]) / found["L"]
+        half_spacing = 0.0 if "surge_front" in columns else 0.5 * found["dx"]
+        return s[:, 0] * np.sqrt(2 * found["g"] / found["L"]), (s[:, 1] + half_spacing) / found["L"]
     s = np.loadtxt(path)
     return s[:, 0], s[:, 1]
 

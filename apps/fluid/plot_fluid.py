@@ -16,7 +16,9 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "plotting"))
+sys.path.insert(0, HERE)
 import h5part_plot  # noqa: E402
+import front_errors  # noqa: E402  (apps/fluid: the series' surge front)
 
 PROGRAM = "plot_fluid"
 
@@ -64,9 +66,8 @@ def plot_dam_break(path, p, series_path, out):
     ax.axvspan(1, 2.8, color="0.9", label="compared: 1 <= T <= 2.8")
     ax.plot(experiment[:, 0], experiment[:, 1], "ko", label="Martin & Moyce (1952), a = 2.25 in")
     if os.path.exists(series_path):
-        s = np.loadtxt(series_path)
-        dx = L / float(p["particles"])
-        ax.plot(s[:, 0] * math.sqrt(2 * g / L), (s[:, 1] + 0.5 * dx) / L, "b-", label="SPH, dx = L/%s" % p["particles"])
+        T, Z = front_errors.front(series_path)  # the surge front (specialization/fluid/surge_front.hh)
+        ax.plot(T, Z, "b-", label="SPH, dx = L/%s" % p["particles"])
     ax.set_xlim(0, 3.2); ax.set_ylim(1, 4)
     ax.set_xlabel("T = t sqrt(2 g / L)"); ax.set_ylabel("Z / L"); ax.legend(); ax.set_title("surge front")
     names = h5part_plot.step_indices(path, PROGRAM)

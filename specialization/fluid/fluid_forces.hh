@@ -12,6 +12,8 @@
 #include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
 
+#include "specialization/numerics/ordered_sum.hh"
+#include "specialization/numerics/simd.hh"
 #include "specialization/physics/kernels.hh"
 
 #include "flecsi_lite/execution.hh"
@@ -19,17 +21,25 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace flecsph::fluid {
 
 namespace detail {
-/// The arrays the rates read (owned and ghost particles).
+/// The arrays the rates read (owned and ghost particles); inverse_h is 1/h of each (once per
+/// particle, not once per pair: the same bits as the 1/h a pair's kernel_at computes).
 template<int D>
 struct rate_fields {
   const vector<D>*x, *v, *wall_velocity;
-  const double *m, *h, *rho, *P, *cs;
+  const double *m, *h, *inverse_h, *rho, *P, *cs;
   const sph::particle_kind* kind;
 };
+
+/// 1 in the lanes whose neighbour is a wall (any kind but fluid), 0 in the others.
+template<class T, std::size_t W>
+FLECSPH_SIMD_INLINE T wall_lanes(const sph::particle_kind* kind, const std::size_t (&b)[W]) {
+  return physics::simd::generate<T>([&](std::size_t i) { return kind[b[i]] != sph::particle_kind::fluid ? 1.0 : 0.0; });
+}
 
 /// dv_a/dt and drho_a/dt over a's list; for a pair (a, b), r = x_a - x_b, grad_a W = F r,
 /// F = (F(h_a) + F(h_b)) / 2, V_b = m_b / rho_b:
@@ -42,9 +52,17 @@ struct rate_fields {
 /// where rho_b^H = rho_a - rho0 (g . r) / c_a^2 is the density that hydrostatics gives at b seen
 /// from a, so the diffusion vanishes on the hydrostatic state. Walls enter with their
 /// extrapolated P, rho and (no-slip) velocity, the continuity sum with their own velocity.
-template<class Kernel, int D>
+///
+/// T is the number type of the pair arithmetic (numerics/simd.hh): a pack takes lanes<T> list
+/// entries at once; entries beyond the kernel, beyond the list or at r = 0 are lanes whose terms
+/// are zeroed, and a lane's choices (wall or fluid, approaching or not) are selects of terms
+/// computed by the scalar expressions. The terms go to ordered sums in list order, so the rates
+/// are bitwise those of T = double, the loop as it was before packs (tests/specialization/fluid).
+template<class Kernel, int D, class T = physics::simd::pack>
 void fluid_rates(const sph::neighbour_walk<D>& walk, std::size_t a, const rate_fields<D>& in,
                  const fluid_settings& settings, bool summation, vector<D>& dv_dt, double& drho_dt) {
+  namespace simd = physics::simd;
+  constexpr std::size_t W = simd::lanes<T>;
   const double support2 = physics::kernel_support * physics::kernel_support;
   const vector<D> x_a = in.x[a], v_a = in.v[a];
   const double h_a = in.h[a], rho_a = in.rho[a], P_a = in.P[a], c_a = in.cs[a];
@@ -54,52 +72,75 @@ void fluid_rates(const sph::neighbour_walk<D>& walk, std::size_t a, const rate_f
   const bool wall_viscosity = settings.walls == wall_condition::no_slip;
   const double diffusion = summation ? 0.0 : settings.delta * h_a * settings.eos.reference_sound_speed;
   const double rho0 = settings.eos.reference_density;
-  vector<D> r, sum_v{};
-  double sum_rho = 0, sum_delta = 0;
-  for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-    const std::size_t b = walk.neighbour(j);
-    const double r2 = walk.separation(x_a, in.x[b], j, r);
-    const double h_b = in.h[b], h_max = std::max(h_a, h_b);
-    if (r2 >= support2 * h_max * h_max || r2 == 0) continue;
-    const double distance = std::sqrt(r2);
-    const double F = 0.5 * (kernel_a.gradient_factor(distance) + sph::kernel_at<Kernel>(h_b).gradient_factor(distance));
-    const double rho_b = in.rho[b], m_b = in.m[b], volume_b = m_b / rho_b;
-    const bool wall = in.kind[b] != sph::particle_kind::fluid;
-    double pair = -m_b * (P_a + in.P[b]) / (rho_a * rho_b) * F;  // times r
-    vector<D> v_ab;
-    double v_dot_r = 0;
+  const T lane = simd::generate<T>([](std::size_t i) { return double(i); }), zero = 0.0;
+  simd::ordered_sum<T> sum_v[D], sum_rho, sum_delta;
+  const std::size_t first = walk.begin(a), end = walk.end(a);
+  for (std::size_t j0 = first; j0 < end; j0 += W) {
+    // Lane i holds entry j0 + i; past the end it repeats the last entry, masked out below.
+    std::size_t b[W];
+    T r[D];
+    const T r2 = walk.separations(j0, end, x_a, in.x, b, r);
+    const auto gather = [&](const double* field) {
+      return simd::generate<T>([&](std::size_t i) { return field[b[i]]; });
+    };
+    const T h_b = gather(in.h), h_max = simd::maximum(T(h_a), h_b);
+    const auto pair = (lane < double(end - j0)) && !(r2 >= support2 * h_max * h_max) && (r2 != 0.0);
+    if (!simd::any_lane(pair)) continue;
+    const T distance = simd::square_root(r2);
+    const T F = 0.5 * (kernel_a.gradient_factor(distance) +
+                       sph::kernel_at<Kernel, T>(h_b, gather(in.inverse_h)).gradient_factor(distance));
+    const T rho_b = gather(in.rho), m_b = gather(in.m), volume_b = m_b / rho_b;
+    const auto wall = wall_lanes<T>(in.kind, b) != 0.0;
+    T pressure_pair = -m_b * (P_a + gather(in.P)) / (rho_a * rho_b) * F;  // times r
+    T v_ab[D], v_dot_r = 0.0;
     for (int k = 0; k < D; ++k) {
-      v_ab[k] = v_a[k] - in.v[b][k];
+      v_ab[k] = v_a[k] - simd::generate<T>([&](std::size_t i) { return in.v[b[i]][k]; });
       v_dot_r += v_ab[k] * r[k];
     }
     // Morris et al. soften r^2 by 0.01 h^2; at h = 1.5 dx that weakens the lattice's Laplacian by
     // 1.5% (the Poiseuille profile then runs 1.7% fast), 0.001 h^2 by 0.4%. Particles never meet.
-    const double h_ab = 0.5 * (h_a + h_b), softening = 0.01 * h_ab * h_ab, laminar_softening = 0.001 * h_ab * h_ab;
-    const bool viscous = !wall || wall_viscosity;
-    double laminar_factor = 0;
-    if (viscous && laminar) laminar_factor = m_b * mu2 * r2 * F / (rho_a * rho_b * (r2 + laminar_softening));
-    if (viscous && !laminar && v_dot_r < 0) {
-      const double Pi = -settings.artificial_alpha * h_ab * 0.5 * (c_a + in.cs[b]) * v_dot_r /
-                        (0.5 * (rho_a + rho_b) * (r2 + softening));
-      pair -= m_b * Pi * F;
+    const T h_ab = 0.5 * (h_a + h_b);
+    const auto viscous = wall_viscosity ? pair : (pair && !wall);
+    T laminar_factor = zero;
+    if (laminar) {
+      const T laminar_softening = 0.001 * h_ab * h_ab;
+      laminar_factor = simd::select(viscous, m_b * mu2 * r2 * F / (rho_a * rho_b * (r2 + laminar_softening)), zero);
+    } else {
+      const T softening = 0.01 * h_ab * h_ab;
+      const T Pi = -settings.artificial_alpha * h_ab * 0.5 * (c_a + gather(in.cs)) * v_dot_r /
+                   (0.5 * (rho_a + rho_b) * (r2 + softening));
+      pressure_pair = simd::select(viscous && (v_dot_r < 0.0), pressure_pair - m_b * Pi * F, pressure_pair);
     }
-    for (int k = 0; k < D; ++k) sum_v[k] += pair * r[k] + laminar_factor * v_ab[k];
+    for (int k = 0; k < D; ++k) sum_v[k].add(simd::select(pair, pressure_pair * r[k] + laminar_factor * v_ab[k], zero));
     // Continuity with the wall's own velocity (its `velocity` is the no-slip extrapolation).
-    double continuity = v_dot_r;
-    if (wall) {
-      continuity = 0;
-      for (int k = 0; k < D; ++k) continuity += (v_a[k] - in.wall_velocity[b][k]) * r[k];
+    T continuity = v_dot_r;
+    if (simd::any_lane(wall)) {
+      T wall_continuity = 0.0;
+      for (int k = 0; k < D; ++k)
+        wall_continuity +=
+          (v_a[k] - simd::generate<T>([&](std::size_t i) { return in.wall_velocity[b[i]][k]; })) * r[k];
+      continuity = simd::select(wall, wall_continuity, v_dot_r);
     }
-    sum_rho += volume_b * continuity * F;
-    if (!wall && diffusion > 0) {
-      double g_dot_r = 0;
+    sum_rho.add(simd::select(pair, volume_b * continuity * F, zero));
+    if (diffusion > 0) {
+      T g_dot_r = 0.0;
       for (int k = 0; k < D; ++k) g_dot_r += settings.body_force[k] * r[k];
-      const double hydrostatic_b = rho_a - rho0 * g_dot_r / (c_a * c_a);
-      sum_delta += volume_b * 2 * (hydrostatic_b - rho_b) * F;
+      const T hydrostatic_b = rho_a - rho0 * g_dot_r / (c_a * c_a);
+      sum_delta.add(simd::select(pair && !wall, volume_b * 2 * (hydrostatic_b - rho_b) * F, zero));
     }
   }
-  for (int k = 0; k < D; ++k) dv_dt[k] = sum_v[k] + settings.body_force[k];
-  drho_dt = summation ? 0.0 : rho_a * sum_rho + diffusion * sum_delta;
+  for (int k = 0; k < D; ++k) dv_dt[k] = sum_v[k].total() + settings.body_force[k];
+  drho_dt = summation ? 0.0 : rho_a * sum_rho.total() + diffusion * sum_delta.total();
+}
+
+/// 1/h of the first n particles (owned, then ghosts), in a buffer kept from step to step.
+inline const double* inverse_smoothing_lengths(const double* h, std::size_t n) {
+  thread_local std::vector<double> buffer;
+  buffer.resize(n);
+  double* inverse = buffer.data();
+  flecsi_lite::forall(
+    n, [=](std::size_t i) { inverse[i] = 1.0 / h[i]; }, "fluid::inverse_smoothing_lengths");
+  return inverse;
 }
 }  // namespace detail
 
@@ -118,8 +159,10 @@ double compute_fluid_rates(sph::neighbours_ro<D> neighbours_object, physics::ker
                            sph::wo<double> density_rate) {
   const sph::neighbourhood<D>& neighbours = *neighbours_object;
   const sph::neighbour_walk<D> walk(neighbours);
-  const detail::rate_fields<D> in{x.data(), v.data(),  wall_velocity.data(), m.data(), h.data(), rho.data(),
-                                  P.data(), cs.data(), kind.data()};
+  const detail::rate_fields<D> in{x.data(),   v.data(), wall_velocity.data(),
+                                  m.data(),   h.data(), detail::inverse_smoothing_lengths(h.data(), h.size()),
+                                  rho.data(), P.data(), cs.data(),
+                                  kind.data()};
   const bool summation = settings.density == density_method::summation;
   const double nu = settings.kinematic_viscosity();
   double smallest = std::numeric_limits<double>::max();

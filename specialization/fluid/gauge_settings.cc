@@ -18,6 +18,10 @@ rt::parameter_block<gauge_settings> declare() {
          "surge front: fluid at most this far above the floor (units of length)")
     .greater_than(0)
     .at_most(1e10);
+  p.real("gauge_smoothing", &gauge_settings::smoothing,
+         "gauges: the interpolation's smoothing length in units of each particle's h (1: the SPH field)")
+    .at_least(1)
+    .at_most(10);
   p.check([](const gauge_settings& s) {
     if (s.coordinates.size() % 4 != 0)
       throw rt::parameter_error("gauges: " + std::to_string(s.coordinates.size()) +

@@ -28,12 +28,15 @@ struct gauge_settings {
   /// Fluid particles at most this far above the floor are candidates for the surge front (units
   /// of the reference length).
   double front_height = 0.2;
+  /// The interpolation's smoothing length over the particles' own h: 1 reads the SPH field; more
+  /// smooths the reading in space (TrixiParticles' sensors use 2 times their h = 2 dx, i.e. 4 dx).
+  double smoothing = 1.0;
 
   /// The faces of `coordinates` (a parameter_error names the key unless it holds groups of 4).
   std::vector<gauge_face> faces() const;
 };
 
-/// The keys gauges, gauge_samples, gauge_file, gauge_every, front_height.
+/// The keys gauges, gauge_samples, gauge_file, gauge_every, front_height, gauge_smoothing.
 const flecsi_lite::runtime::parameter_block<gauge_settings>& gauge_parameters();
 
 }  // namespace flecsph::fluid

@@ -40,9 +40,10 @@ struct gauge_reduction {
 
 /// This rank's sums at `point` over its owned fluid particles.
 template<int D>
-gauge_sums gauge_point_task(sph::vector<D> point, physics::kernel_type kernel_type, sph::ro<sph::vector<D>> x,
-                            sph::ro<sph::vector<D>> v, sph::ro<double> m, sph::ro<double> rho, sph::ro<double> P,
-                            sph::ro<double> h, sph::ro<sph::particle_kind> kind) {
+gauge_sums gauge_point_task(sph::vector<D> point, physics::kernel_type kernel_type, double smoothing,
+                            sph::ro<sph::vector<D>> x, sph::ro<sph::vector<D>> v, sph::ro<double> m,
+                            sph::ro<double> rho, sph::ro<double> P, sph::ro<double> h,
+                            sph::ro<sph::particle_kind> kind) {
   gauge_sums s;
   physics::dispatch_kernel<D>(kernel_type, [&](auto kernel_type_tag) {
     using Kernel = decltype(kernel_type_tag);
@@ -50,10 +51,10 @@ gauge_sums gauge_point_task(sph::vector<D> point, physics::kernel_type kernel_ty
       if (kind(b) != sph::particle_kind::fluid) continue;
       double r2 = 0;
       for (int k = 0; k < D; ++k) r2 += (point[k] - x(b)[k]) * (point[k] - x(b)[k]);
-      const double reach = physics::kernel_support * h(b);
+      const double h_b = smoothing * h(b), reach = physics::kernel_support * h_b;
       if (r2 >= reach * reach) continue;
       double w, dw_dh;
-      sph::kernel_at<Kernel>(h(b)).value_and_h_derivative(std::sqrt(r2), w, dw_dh);
+      sph::kernel_at<Kernel>(h_b).value_and_h_derivative(std::sqrt(r2), w, dw_dh);
       const double weight = m(b) / rho(b) * w;
       s.weight.add(weight);
       s.pressure.add(weight * P(b));
@@ -87,20 +88,22 @@ std::vector<sph::vector<D>> gauge_samples(const std::array<double, 2>& first, co
   return out;
 }
 
-/// Reads every gauge (one exact-sum reduction per sample, launched together), collective.
+/// Reads every gauge (one exact-sum reduction per sample, launched together), collective;
+/// `smoothing` scales each particle's h in the interpolation (gauge_settings::smoothing).
 template<int D, class State>
-std::vector<gauge_reading<D>> read_gauges(State& s, const std::vector<std::vector<sph::vector<D>>>& gauges) {
+std::vector<gauge_reading<D>> read_gauges(State& s, const std::vector<std::vector<sph::vector<D>>>& gauges,
+                                          double smoothing) {
   using f = sph::fields<D>;
   auto& p = *s.particles;
   using future = decltype(flecsi_lite::reduce<gauge_point_task<D>, gauge_reduction>(
-    sph::vector<D>{}, s.physics.kernel, f::position()(p), f::velocity(p), f::mass()(p), f::density(p), f::pressure(p),
-    f::smoothing_length()(p), f::kind(p)));
+    sph::vector<D>{}, s.physics.kernel, 1.0, f::position()(p), f::velocity(p), f::mass()(p), f::density(p),
+    f::pressure(p), f::smoothing_length()(p), f::kind(p)));
   std::vector<std::vector<future>> pending(gauges.size());
   for (std::size_t g = 0; g < gauges.size(); ++g)
     for (const auto& point : gauges[g])
       pending[g].push_back(flecsi_lite::reduce<gauge_point_task<D>, gauge_reduction>(
-        point, s.physics.kernel, f::position()(p), f::velocity(p), f::mass()(p), f::density(p), f::pressure(p),
-        f::smoothing_length()(p), f::kind(p)));
+        point, s.physics.kernel, smoothing, f::position()(p), f::velocity(p), f::mass()(p), f::density(p),
+        f::pressure(p), f::smoothing_length()(p), f::kind(p)));
   std::vector<gauge_reading<D>> out(gauges.size());
   for (std::size_t g = 0; g < gauges.size(); ++g) {
     for (auto& sample : pending[g]) {
