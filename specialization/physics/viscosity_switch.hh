@@ -15,12 +15,36 @@ namespace flecsph::physics {
 /// that a shock gets the viscosity it has today. The decay time is tau = H / (2 l v_sig) with H
 /// the kernel's support radius (CD10 sec. 2.4); Phantom's tau = h / (sigma_decay v_sig) with
 /// sigma_decay = 0.1 and H = 2h is l = 0.1.
+/// How d(div v)/dt is estimated: from the accelerations of the last force evaluation,
+/// d(div v)/dt = div a - tr(grad v grad v) (CD10 sec. 2.3 and Price et al. 2018 sec. 2.2.9, as Phantom),
+/// or as the difference of div v between the particle's updates over the time between them (SWIFT's
+/// SPHENIX, Borrow et al. 2022, sec. 2.4), which lags the shock by one step.
+enum class divergence_rate_estimate { acceleration, difference };
+
+/// The target alpha_loc: CD10's eq. 13, alpha_max H^2 A / (v_sig^2 + H^2 A) with H the support
+/// radius, or Price et al. (2018) eqs. 40-43, min(10 h^2 A / c^2, alpha_max) with h the smoothing
+/// length (support 2h for the cubic spline, as Phantom's).
+enum class local_alpha_form { cullen_dehnen, price };
+
 struct viscosity_switch_settings {
   bool enabled = false;  ///< off: the constant alpha (with the optional Balsara factor)
   double alpha_min = 0.0;
   double alpha_max = 1.0;
   double decay_length = 0.1;  ///< l of tau = H / (2 l v_sig)
+  divergence_rate_estimate rate = divergence_rate_estimate::acceleration;
+  local_alpha_form form = local_alpha_form::price;
 };
+
+/// d(div v)/dt = div a - sum_kl (dv_k/dx_l)(dv_l/dx_k) (CD10 sec. 2.3; Price et al. 2018 sec. 2.2.9):
+/// the time derivative of the velocity gradient's trace along the particle's path, from the
+/// divergence of the acceleration and the gradient tensor itself, with no lag behind the flow.
+template<int D>
+double divergence_rate_from_acceleration(double acceleration_divergence, const double (&gradient)[D][D]) {
+  double product_trace = 0;
+  for (int k = 0; k < D; ++k)
+    for (int l = 0; l < D; ++l) product_trace += gradient[k][l] * gradient[l][k];
+  return acceleration_divergence - product_trace;
+}
 
 /// CD10's limiter xi (eq. 18): |2 (1 - R)^4 div v|^2 / (|2 (1 - R)^4 div v|^2 + tr(S S^T)),
 /// S the traceless symmetric part of the velocity gradient (shear) and R = (1/rho) sum_b
@@ -43,6 +67,18 @@ inline double cullen_dehnen_local_alpha(double div_v_rate, double xi, double sup
   const double source = support_radius * support_radius * A;
   const double total = signal_velocity * signal_velocity + source;
   return total > 0 ? alpha_max * source / total : 0.0;
+}
+
+/// alpha_loc = min(10 h^2 A / c^2, alpha_max), A = xi max(-d(div v)/dt, 0) (Price et al. 2018,
+/// PASA 35, e031, eqs. 40-43; Phantom's get_alphaloc): h the smoothing length (10 h^2 = 2.5 H^2 for
+/// a support H = 2h) and c the particle's sound speed, linear in the source up to alpha_max, so
+/// a shock reaches alpha_max where CD10's saturating form stays near alpha_max / 2.
+inline double price_local_alpha(double div_v_rate, double xi, double smoothing_length, double sound_speed,
+                                double alpha_max) {
+  const double A = xi * std::max(-div_v_rate, 0.0);
+  const double c2 = sound_speed * sound_speed;
+  if (!(c2 > 0)) return A > 0 ? alpha_max : 0.0;
+  return std::min(10.0 * smoothing_length * smoothing_length * A / c2, alpha_max);
 }
 
 /// The new alpha after a step of length dt (CD10 sec. 2.4): at once alpha_loc when that is

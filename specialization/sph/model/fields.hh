@@ -130,7 +130,8 @@ struct fields {
   // The Cullen & Dehnen (2010) viscosity switch only (viscosity_switch = on; with it off no file
   // holds them, only_with("viscosity_switch")): each particle's alpha (output and restart); div v of its last
   // update (which its neighbours' limiter reads), the one before and the time of that one, so a
-  // restart continues bitwise; the shear tr(S S^T) (in memory only).
+  // restart continues bitwise; the shear tr(S S^T) and d(div v)/dt from the accelerations (in
+  // memory only: both are computed again from the state before every use).
   static inline const definition<double> viscosity_alpha{"alpha",
                                                          persist::output().restart().only_with("viscosity_switch")};
   static inline const definition<double> switch_divergence{"switch_div_v",
@@ -140,6 +141,7 @@ struct fields {
   static inline const definition<double> switch_previous_time{"switch_time",
                                                               persist::restart().only_with("viscosity_switch")};
   static inline const definition<double> switch_shear{"switch_shear"};
+  static inline const definition<double> switch_divergence_rate{"switch_div_v_rate"};
 };
 
 }  // namespace flecsph::sph

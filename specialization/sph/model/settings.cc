@@ -61,6 +61,14 @@ physics_block declare_physics(const physics_settings& defaults) {
          "viscosity switch: l of the decay time h_support / (2 l v_signal)")
     .greater_than(0)
     .at_most(10);
+  p.choice("viscosity_switch_rate", member(&physics_settings::viscosity_switch, &viscosity_switch_settings::rate),
+           divergence_rate_names(),
+           "viscosity switch: d(div v)/dt from the accelerations (CD10, Phantom) or the difference of div v "
+           "between updates (SPHENIX)");
+  p.choice("viscosity_switch_form", member(&physics_settings::viscosity_switch, &viscosity_switch_settings::form),
+           local_alpha_form_names(),
+           "viscosity switch: alpha_loc = min(10 h^2 A / c^2, alpha_max) (price: Price et al. 2018) or "
+           "alpha_max H^2 A / (v_sig^2 + H^2 A) (cullen_dehnen: CD10 eq. 13)");
   p.real("conductivity_alpha", &physics_settings::conductivity,
          "alpha_u of the Price (2008) artificial conductivity (0: off)")
     .range(0, 100);
@@ -144,6 +152,21 @@ physics_block declare_physics(const physics_settings& defaults) {
 const flecsi_lite::runtime::name_table<time_stepping>& time_stepping_names() {
   static const flecsi_lite::runtime::name_table<time_stepping> table{
     "time stepping", {{"global", time_stepping::global}, {"individual", time_stepping::individual}}};
+  return table;
+}
+
+const flecsi_lite::runtime::name_table<physics::divergence_rate_estimate>& divergence_rate_names() {
+  using physics::divergence_rate_estimate;
+  static const flecsi_lite::runtime::name_table<divergence_rate_estimate> table{
+    "divergence rate estimate",
+    {{"acceleration", divergence_rate_estimate::acceleration}, {"difference", divergence_rate_estimate::difference}}};
+  return table;
+}
+
+const flecsi_lite::runtime::name_table<physics::local_alpha_form>& local_alpha_form_names() {
+  using physics::local_alpha_form;
+  static const flecsi_lite::runtime::name_table<local_alpha_form> table{
+    "alpha_loc form", {{"price", local_alpha_form::price}, {"cullen_dehnen", local_alpha_form::cullen_dehnen}}};
   return table;
 }
 

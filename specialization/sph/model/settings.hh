@@ -28,6 +28,11 @@ const flecsi_lite::runtime::name_table<gravity_criterion>& gravity_criterion_nam
 const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::curve>& key_order_names();
 const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::balance>& balance_names();
 
+/// The parameter-file names of the viscosity switch's d(div v)/dt estimates ("acceleration",
+/// "difference") and alpha_loc forms ("price", "cullen_dehnen").
+const flecsi_lite::runtime::name_table<physics::divergence_rate_estimate>& divergence_rate_names();
+const flecsi_lite::runtime::name_table<physics::local_alpha_form>& local_alpha_form_names();
+
 /// Self-gravity: softened with the SPH kernel (Price & Monaghan 2007) on the gravity tree, in 3D
 /// without periodic axes (no Ewald summation yet).
 struct gravity_settings {

@@ -4,11 +4,12 @@
 // last update, alpha_loc and the new alpha. Placed between the equation of state and the forces
 // (sph_model.hh); the force pass reads alpha_ab = (alpha_a + alpha_b) / 2 (forces.hh).
 //
-// d(div v)/dt is the difference of div v between the particle's updates over the time between
-// them, as SWIFT's SPHENIX does (Borrow et al. 2022, MNRAS 511, 2367, sec. 2.4), not CD10's
-// estimate from the accelerations: one neighbour pass less, and exact for the linear flows of
-// the tests. With individual time steps only the active particles are updated, each over its own
-// step.
+// d(div v)/dt is by default div a - tr(grad v grad v) from the accelerations of the last force
+// evaluation (CD10 sec. 2.3; Price et al. 2018, PASA 35, e031, as Phantom), computed in the
+// gradient pass; `viscosity_switch_rate = difference` takes instead the difference of div v
+// between the particle's updates over the time between them, as SWIFT's SPHENIX does (Borrow et
+// al. 2022, MNRAS 511, 2367, sec. 2.4), which reacts one step late at a shock. With individual
+// time steps only the active particles are updated, each over its own step.
 #pragma once
 
 #include "specialization/physics/kernels/kernel_at.hh"
@@ -29,15 +30,17 @@
 
 namespace flecsph::sph {
 
-/// div v_a and tr(S_a S_a^T) of the owned targets of one part, S the traceless symmetric part of
-/// the SPH velocity gradient dv_k/dx_l = -1/(Omega_a rho_a) sum_b m_b (v_a - v_b)_k r_ab,l F_a
-/// (grad_a W_ab = r_ab F_a; Price 2012, JCP 231, 759, eq. 101): its trace is the div v of
-/// compute_velocity_gradients.
+/// div v_a, tr(S_a S_a^T) and d(div v)/dt of the owned targets of one part, S the traceless
+/// symmetric part of the SPH velocity gradient dv_k/dx_l = -1/(Omega_a rho_a) sum_b m_b
+/// (v_a - v_b)_k r_ab,l F_a (grad_a W_ab = r_ab F_a; Price 2012, JCP 231, 759, eq. 101): its trace
+/// is the div v of compute_velocity_gradients. div a, the same estimate on the accelerations of
+/// the last force evaluation, gives d(div v)/dt = div a - tr(grad v grad v).
 template<int D, flecsi_lite::privilege Ghost>
 void compute_switch_gradients(neighbours_ro<D> neighbours_object, physics_settings settings,
                               ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
-                              ro_neighbours<double, Ghost> m, ro<double> h, ro<double> rho, ro<double> omega,
-                              wo<double> divergence, wo<double> shear_squared) {
+                              ro_neighbours<vector<D>, Ghost> acceleration, ro_neighbours<double, Ghost> m,
+                              ro<double> h, ro<double> rho, ro<double> omega, wo<double> divergence,
+                              wo<double> shear_squared, wo<double> divergence_rate) {
   const neighbourhood<D>& neighbours = *neighbours_object;
   const neighbour_walk<D> walk(neighbours);
   const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
@@ -50,18 +53,25 @@ void compute_switch_gradients(neighbours_ro<D> neighbours_object, physics_settin
         const kernel_at<Kernel> kernel_a(h(a));
         const double reach2 = physics::kernel_support * physics::kernel_support * h(a) * h(a);
         double gradient[D][D] = {};
+        double acceleration_sum = 0;
         vector<D> r;
         for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
           const std::size_t b = walk.neighbour(j);
           const double r2 = walk.separation(x(a), x(b), j, r);
           if (r2 >= reach2 || r2 == 0) continue;
           const double factor = m(b) * kernel_a.gradient_factor(std::sqrt(r2));
-          for (int k = 0; k < D; ++k)
+          for (int k = 0; k < D; ++k) {
             for (int l = 0; l < D; ++l) gradient[k][l] += (v(a)[k] - v(b)[k]) * r[l] * factor;
+            acceleration_sum += (acceleration(a)[k] - acceleration(b)[k]) * r[k] * factor;
+          }
         }
         const double scale = -1.0 / (omega(a) * rho(a));
         double div = 0;
         for (int k = 0; k < D; ++k) div += scale * gradient[k][k];
+        double velocity_gradient[D][D];
+        for (int k = 0; k < D; ++k)
+          for (int l = 0; l < D; ++l) velocity_gradient[k][l] = scale * gradient[k][l];
+        divergence_rate(a) = physics::divergence_rate_from_acceleration<D>(scale * acceleration_sum, velocity_gradient);
         double shear = 0;
         for (int k = 0; k < D; ++k)
           for (int l = 0; l < D; ++l) {
@@ -85,8 +95,8 @@ void update_switch_alpha(neighbours_ro<D> neighbours_object, physics_settings se
                          ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
                          ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> cs,
                          ro_neighbours<double, Ghost> divergence, ro<double> h, ro<double> rho,
-                         ro<double> shear_squared, rw<double> alpha, rw<double> previous_divergence,
-                         rw<double> previous_time) {
+                         ro<double> shear_squared, ro<double> divergence_rate, rw<double> alpha,
+                         rw<double> previous_divergence, rw<double> previous_time) {
   const neighbourhood<D>& neighbours = *neighbours_object;
   const neighbour_walk<D> walk(neighbours);
   const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
@@ -120,8 +130,13 @@ void update_switch_alpha(neighbours_ro<D> neighbours_object, physics_settings se
         const double R = std::clamp(signed_sum / rho(a), -1.0, 1.0);
         const double xi = physics::cullen_dehnen_limiter(divergence(a), shear_squared(a), R);
         const double dt = now - previous_time(a);
-        const double rate = dt > 0 ? (divergence(a) - previous_divergence(a)) / dt : 0.0;
-        const double local = physics::cullen_dehnen_local_alpha(rate, xi, support_radius, signal, parameters.alpha_max);
+        double rate = divergence_rate(a);
+        if (parameters.rate == physics::divergence_rate_estimate::difference)
+          rate = dt > 0 ? (divergence(a) - previous_divergence(a)) / dt : 0.0;
+        const double local =
+          parameters.form == physics::local_alpha_form::price
+            ? physics::price_local_alpha(rate, xi, h(a), cs(a), parameters.alpha_max)
+            : physics::cullen_dehnen_local_alpha(rate, xi, support_radius, signal, parameters.alpha_max);
         alpha(a) = physics::cullen_dehnen_alpha(alpha(a), local, dt, support_radius, signal, parameters);
         previous_divergence(a) = divergence(a);
         previous_time(a) = now;
@@ -169,8 +184,9 @@ void update_viscosity_switch(simulation<D>& s, bool starting) {
       flecsi_lite::execute<compute_switch_gradients<D, flecsi_lite::na>>(s.neighbours, s.physics, field...);
       flecsi_lite::execute<compute_switch_gradients<D, flecsi_lite::ro>>(s.neighbours, s.physics, field...);
     },
-    std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
-                    f::omega(p), f::switch_divergence(p), f::switch_shear(p)));
+    std::make_tuple(f::position()(p), f::velocity(p), f::acceleration(p), f::mass()(p), f::smoothing_length()(p),
+                    f::density(p), f::omega(p), f::switch_divergence(p), f::switch_shear(p),
+                    f::switch_divergence_rate(p)));
   const double now = switch_time_now(s, starting);
   if (starting) {
     flecsi_lite::execute<start_switch_alpha<D>>(s.physics, now, f::switch_divergence(p), f::viscosity_alpha(p),
@@ -183,8 +199,8 @@ void update_viscosity_switch(simulation<D>& s, bool starting) {
       flecsi_lite::execute<update_switch_alpha<D, flecsi_lite::ro>>(s.neighbours, s.physics, now, field...);
     },
     std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::sound_speed(p), f::switch_divergence(p),
-                    f::smoothing_length()(p), f::density(p), f::switch_shear(p), f::viscosity_alpha(p),
-                    f::switch_previous_divergence(p), f::switch_previous_time(p)));
+                    f::smoothing_length()(p), f::density(p), f::switch_shear(p), f::switch_divergence_rate(p),
+                    f::viscosity_alpha(p), f::switch_previous_divergence(p), f::switch_previous_time(p)));
 }
 
 }  // namespace flecsph::sph

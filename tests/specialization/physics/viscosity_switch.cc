@@ -54,3 +54,31 @@ TEST_CASE("alpha rises at once and decays on tau = H / (2 l v_sig)", "[viscosity
     cullen_dehnen_alpha(cullen_dehnen_alpha(0.9, 0.1, 0.1, 0.1, 1.0, settings), 0.1, 0.1, 0.1, 1.0, settings);
   CHECK(twice == Approx(once).epsilon(1e-14));
 }
+
+TEST_CASE("d(div v)/dt from the accelerations: div a - tr(grad v grad v)", "[viscosity_switch]") {
+  // Homologous flow v = s x (gradient s I) in free motion (a = 0): div v = D s falls as
+  // D s / (1 + s t), so d(div v)/dt = -D s^2 at t = 0, which is -tr(grad v grad v).
+  const double s = 0.5;
+  const double gradient3[3][3] = {{s, 0, 0}, {0, s, 0}, {0, 0, s}};
+  CHECK(divergence_rate_from_acceleration<3>(0.0, gradient3) == Approx(-3 * s * s));
+  // A pure rotation (antisymmetric gradient, omega = 2) in its centripetal balance, a = -omega^2 x:
+  // div a = -2 omega^2 in 2D, tr(grad v grad v) = -2 omega^2, so div v stays 0.
+  const double omega = 2.0;
+  const double rotation[2][2] = {{0, -omega}, {omega, 0}};
+  CHECK(divergence_rate_from_acceleration<2>(-2 * omega * omega, rotation) == Approx(0.0).margin(1e-15));
+  // 1D: a compression rate dv/dx = -1 whose acceleration gradient da/dx = -3 steepens it:
+  // d(dv/dx)/dt = -3 - 1.
+  const double gradient1[1][1] = {{-1.0}};
+  CHECK(divergence_rate_from_acceleration<1>(-3.0, gradient1) == Approx(-4.0));
+}
+
+TEST_CASE("Price et al. (2018) alpha_loc: min(10 h^2 A / c^2, alpha_max)", "[viscosity_switch]") {
+  CHECK(price_local_alpha(+5.0, 1.0, 0.1, 1.0, 1.0) == 0.0);  // compression weakening
+  CHECK(price_local_alpha(-5.0, 0.0, 0.1, 1.0, 1.0) == 0.0);  // fully limited
+  // A = 0.5 * 4 = 2, 10 h^2 A / c^2 = 10 * 0.01 * 2 / 0.25 = 0.8, below alpha_max.
+  CHECK(price_local_alpha(-4.0, 0.5, 0.1, 0.5, 1.0) == Approx(0.8));
+  // Linear in the source up to alpha_max, then cut: twice the source gives alpha_max.
+  CHECK(price_local_alpha(-8.0, 0.5, 0.1, 0.5, 1.0) == 1.0);
+  // No sound speed (cold gas): any growing compression gives alpha_max.
+  CHECK(price_local_alpha(-1.0, 1.0, 0.1, 0.0, 1.5) == 1.5);
+}
