@@ -12,6 +12,7 @@
 #include "flecsi_lite/data/privilege.hh"
 #include "flecsi_lite/data/topology_base.hh"
 
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -108,13 +109,28 @@ class field_reference {
   using topology_type = Topo;
   field_reference(Topo& topology, std::size_t id) : topology_(&topology), id_(id) {}
 
+  /// This field, or no field when `present` is false: a task then gets an empty accessor (size 0,
+  /// data() null), the launch has no access to the field, and no storage is ever made for it. For
+  /// a field that only some physics reads and writes (an option that is off takes no memory).
+  field_reference only_if(bool present) const {
+    field_reference same = *this;
+    same.present_ = present;
+    return same;
+  }
+  /// False for an absent field (only_if(false)).
+  bool present() const { return present_; }
+
   Topo& topology() const { return *topology_; }
   std::size_t id() const { return id_; }
   const std::string& name() const { return data::registered_fields<Topo>()[id_].name; }
-  data::field_storage<T>& storage() const { return topology_->template storage<T>(id_, name()); }
+  data::field_storage<T>& storage() const {
+    if (!present_) throw std::logic_error("field '" + name() + "' is absent (only_if(false)): it has no storage");
+    return topology_->template storage<T>(id_, name());
+  }
 
   template<privilege Owned, privilege Ghost>
   accessor<T, Owned, Ghost> make_accessor() const {
+    if (!present_) return {};
     auto& values = storage();
     return {values.view(), topology_->owned_size(), topology_->ghost_size(), &values.name()};
   }
@@ -122,6 +138,7 @@ class field_reference {
  private:
   Topo* topology_;
   std::size_t id_;
+  bool present_ = true;
 };
 
 template<class T>

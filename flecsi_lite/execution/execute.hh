@@ -114,6 +114,7 @@ struct binder<Param, Arg, std::enable_if_t<is_field_reference<std::decay_t<Arg>>
   reference ref;
   explicit binder(Arg&& a) : ref(a) {}
   void collect(collector& c) const {
+    if (!ref.present()) return;  // an absent field: no dependency, no ghost copy, no storage
     c.accesses.push_back({ref.topology().instance_id(), &ref.topology(), ref.id(), &ref.storage(),
                           accessor_type::owned_privilege, accessor_type::ghost_privilege});
   }

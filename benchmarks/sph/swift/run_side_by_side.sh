@@ -7,7 +7,7 @@
 #
 # Options: --per-side N (50), --steps S (5: timed steps, after one warm-up step on both sides),
 # --repeats R (3). Environment: SWIFT_BINARY (required: SWIFT built with gadget2 hydro and the
-# cubic spline), BUILD (default build-native: our build folder, relative to the repository root
+# cubic spline), BUILD (default build: our build folder, relative to the repository root
 # or absolute), PYTHON (default /usr/bin/python3: numpy and h5py, for the initial conditions).
 #
 # Each repeat runs ours 1 rank x 1 thread, SWIFT 1 thread, ours 1 x 2 threads, SWIFT 2 threads.
@@ -41,7 +41,7 @@ root=$(cd "$here/../../.." && pwd)
 [ -n "${SWIFT_BINARY:-}" ] || die "set SWIFT_BINARY to the swift executable (see $here/README.md for how to build it)"
 [ -f "$SWIFT_BINARY" ] && [ -x "$SWIFT_BINARY" ] || die "SWIFT_BINARY='$SWIFT_BINARY' is not an executable file"
 swift=$(cd "$(dirname "$SWIFT_BINARY")" && pwd)/$(basename "$SWIFT_BINARY")
-build=${BUILD:-build-native}
+build=${BUILD:-build}
 [[ "$build" = /* ]] || build="$root/$build"
 bench="$build/benchmarks/sph/bench_sedov"
 [ -x "$bench" ] || die "$bench is not built (BUILD=$build)"

@@ -31,7 +31,8 @@ enum class particle_kind : std::int32_t { fluid = 0, wall = 1 };
 /// its persistence (flecsi_lite/data/persistence.hh): what the output, the checkpoints and the
 /// initial-data reader hold is exactly what these definitions say, and a field that exists in
 /// files only with a feature of the run says so (`only_with`: "gravity", "individual_time_steps",
-/// "viscosity_switch";
+/// "viscosity_switch", "balsara_switch", "velocity_gradients"; such a field also takes memory only in
+/// the runs that have its feature);
 /// run_features() in files/particle_output.hh says which a run has).
 ///
 /// Registration. Each definition registers its field with ntree<D> (data/field_registry.hh; its
@@ -43,7 +44,7 @@ enum class particle_kind : std::int32_t { fluid = 0, wall = 1 };
 /// the order in which a file's datasets are created (readers find them by name). Output and checkpoints hold
 /// x y z, vx vy vz (zeros beyond D), m rho P u h id, kind (int32), cs, du_dt; checkpoints also
 /// what the next step reads besides (accelerations and du/dt of the last force evaluation, grad-h
-/// and pressure terms, the Balsara inputs, the walls' accumulators), so that a restart continues
+/// and pressure terms, the Balsara inputs with that switch, the walls' accumulators), so that a restart continues
 /// bitwise, and the distribution bookkeeping. Initial data: x [y z], m, h, u required; vx vy vz,
 /// rho, id, kind optional. The rest (half-step values with global steps) is recomputed in every
 /// step; individual time steps add their bins and step bounds (and the half-step values).
@@ -81,9 +82,12 @@ struct fields {
   static inline const definition<vector<D>> acceleration{"acceleration", persist::as("ax", "ay", "az").restart()};
   static inline const definition<double> omega{"omega", persist::restart()};  ///< grad-h factor (1 for fixed h)
   static inline const definition<double> pressure_term{"P_over_omega_rho2", persist::restart()};  ///< P / (Omega rho^2)
-  static inline const definition<double> velocity_divergence{"div_v", persist::restart()};  ///< for the Balsara switch
-  static inline const definition<double> velocity_curl{"curl_v", persist::restart()};       ///< |curl v|, same
-  static inline const definition<double> balsara{"balsara", persist::restart()};            ///< Balsara factor (1: off)
+  // The velocity gradients (with the Balsara switch, and div v with individual time steps) and
+  // the Balsara factor: only with the physics that reads them (no memory, no file otherwise).
+  static inline const definition<double> velocity_divergence{"div_v",
+                                                             persist::restart().only_with("velocity_gradients")};
+  static inline const definition<double> velocity_curl{"curl_v", persist::restart().only_with("balsara_switch")};
+  static inline const definition<double> balsara{"balsara", persist::restart().only_with("balsara_switch")};
   /// Accumulated (per unit mass) forces and heating the fluid exerted on a wall particle.
   static inline const definition<vector<D>> boundary_impulse{
     "boundary_impulse", persist::as("impulse_x", "impulse_y", "impulse_z").restart()};

@@ -21,6 +21,7 @@ void compute_velocity_gradients(neighbours_ro<D> neighbours_object, physics_sett
   const neighbourhood<D>& neighbours = *neighbours_object;
   const neighbour_walk<D> walk(neighbours);
   const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
+  const bool with_curl = curl.data() != nullptr;  // absent without the Balsara switch: div v only
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
     using Kernel = decltype(kernel);
     flecsi_lite::forall(
@@ -50,8 +51,9 @@ void compute_velocity_gradients(neighbours_ro<D> neighbours_object, physics_sett
         }
         const double scale = -1.0 / (omega(a) * rho(a));
         divergence(a) = scale * div;
-        curl(a) = std::fabs(scale) *
-                  std::sqrt(rotation[0] * rotation[0] + rotation[1] * rotation[1] + rotation[2] * rotation[2]);
+        if (with_curl)
+          curl(a) = std::fabs(scale) *
+                    std::sqrt(rotation[0] * rotation[0] + rotation[1] * rotation[1] + rotation[2] * rotation[2]);
       },
       "sph::compute_velocity_gradients");
   });
@@ -61,19 +63,21 @@ void compute_velocity_gradients(neighbours_ro<D> neighbours_object, physics_sett
 inline double pressure_over_rho2(double P, double omega, double rho) { return P / (omega * rho * rho); }
 
 /// Pressure, sound speed and P / (Omega rho^2) of every owned particle; the Balsara factor when
-/// the switch is on (from the velocity gradients of compute_velocity_gradients), 1 otherwise.
+/// the switch is on (from the velocity gradients of compute_velocity_gradients; with it off the
+/// gradients and the factor are absent fields, empty accessors, and the force loop takes 1).
 template<int D>
 void compute_equation_of_state(physics_settings settings, ro<double> rho, ro<double> u, ro<double> h, ro<double> omega,
                                ro<double> divergence, ro<double> curl, wo<double> pressure, wo<double> sound_speed,
                                wo<double> pressure_term, wo<double> balsara) {
   const physics::equation_of_state eos = settings.eos;
+  const bool with_balsara = settings.balsara && balsara.data() != nullptr;
   flecsi_lite::forall(
     rho.size(),
     [&](std::size_t a) {
       pressure(a) = eos.pressure(rho(a), u(a));
       pressure_term(a) = pressure_over_rho2(pressure(a), omega(a), rho(a));
       sound_speed(a) = eos.sound_speed(rho(a), u(a));
-      balsara(a) = settings.balsara ? physics::balsara_switch(divergence(a), curl(a), sound_speed(a), h(a)) : 1.0;
+      if (with_balsara) balsara(a) = physics::balsara_switch(divergence(a), curl(a), sound_speed(a), h(a));
     },
     "sph::compute_equation_of_state");
 }

@@ -190,7 +190,11 @@ template<int D>
 void update_pressure(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
-  if (s.physics.balsara || s.physics.individual_time_steps())
+  // The fields of a physics that is off are absent (only_if): no memory, the tasks' null paths.
+  const bool gradients = s.physics.balsara || s.physics.individual_time_steps();
+  const auto curl = f::velocity_curl(p).only_if(s.physics.balsara);
+  const auto balsara = f::balsara(p).only_if(s.physics.balsara);
+  if (gradients)
     std::apply(
       [&](auto&&... field) {
         execute_interior_then_boundary<compute_velocity_gradients<D, flecsi_lite::na>,
@@ -198,10 +202,11 @@ void update_pressure(simulation<D>& s) {
                                                                                        field...);
       },
       std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
-                      f::omega(p), f::velocity_divergence(p), f::velocity_curl(p)));
-  flecsi_lite::execute<compute_equation_of_state<D>>(
-    s.physics, f::density(p), f::internal_energy(p), f::smoothing_length()(p), f::omega(p), f::velocity_divergence(p),
-    f::velocity_curl(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p), f::balsara(p));
+                      f::omega(p), f::velocity_divergence(p), curl));
+  flecsi_lite::execute<compute_equation_of_state<D>>(s.physics, f::density(p), f::internal_energy(p),
+                                                     f::smoothing_length()(p), f::omega(p),
+                                                     f::velocity_divergence(p).only_if(gradients), curl, f::pressure(p),
+                                                     f::sound_speed(p), f::pressure_term(p), balsara);
 }
 
 /// Accelerations and du/dt (with self-gravity: plus the grad-h gravity term and the tree's
@@ -213,7 +218,8 @@ void update_forces(simulation<D>& s) {
   auto& p = *s.particles;
   const auto fields_read = std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
                                            f::density(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p),
-                                           f::internal_energy(p), f::balsara(p), f::viscosity_alpha(p));
+                                           f::internal_energy(p), f::balsara(p).only_if(s.physics.balsara),
+                                           f::viscosity_alpha(p).only_if(s.physics.viscosity_switch.enabled));
   const auto fields_written =
     std::make_tuple(f::kind(p), f::acceleration(p), f::internal_energy_rate(p), f::own_time_step(p));
   const double none = std::numeric_limits<double>::max();

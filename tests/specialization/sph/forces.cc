@@ -75,6 +75,16 @@ void check_conservation(bool periodic, bool adaptive, bool balsara) {
   // Pair forces are central (along r_ab), so the total torque vanishes too (not with periodic images).
   if (!periodic)
     for (double t : r.torque) CHECK(std::fabs(t) < 1e-14 * r.force_scale);
+  // The fields of a switch that is off take no memory (fields.hh only_with; the tasks get empty
+  // accessors and take Pi_ab's factor 1): the Balsara inputs only with it, alpha only with the
+  // Cullen & Dehnen switch (off here).
+  using f = sph::fields<D>;
+  const auto& storages = s.particles->storages();
+  const auto allocated = [&storages](std::size_t id) { return id < storages.size() && storages[id] != nullptr; };
+  CHECK(allocated(f::balsara.id()) == balsara);
+  CHECK(allocated(f::velocity_curl.id()) == balsara);
+  CHECK(allocated(f::velocity_divergence.id()) == balsara);
+  CHECK_FALSE(allocated(f::viscosity_alpha.id()));
 }
 }  // namespace
 
