@@ -280,11 +280,8 @@ int run(const app::run_context& context) {
       ": the relaxation damps every particle's velocity in every step, which "
       "individual steps do not take; relax with time_steps = global, or set "
       "relaxation_time = 0");
-  s.description = {{"star_mass", s.problem.mass},
-                   {"star_radius", s.problem.radius},
-                   {"polytropic_constant", s.K},
-                   {"gravitational_constant", s.G},
-                   {"dynamical_time", s.dynamical_time}};
+  // What the keys imply (the keys themselves are in the parameters attribute).
+  s.description = {{"polytropic_constant", s.K}, {"dynamical_time", s.dynamical_time}};
   s.extra_statistics_columns = extra_columns(s);
   s.extra_statistics = [&s] { return extra_values(s); };
   auto m = sph::make_app_control_model<bns_run>({[](bns_run&) {},

@@ -59,7 +59,6 @@ int run(const app::run_context& context) {
   s.problem = sedov::problem_parameters().read(context.parameters());
   sph::require_equation_of_state(s.physics, flecsph::physics::eos_type::ideal_gas, s.program,
                                  "the similarity solution");
-  s.description = {{"blast_energy", s.problem.energy}, {"rho0", s.problem.rho0}};
   auto m = sph::make_app_control_model<sedov_run<D>>(
     {[](sedov_run<D>& state) { sedov::set_periodic_box(state, state.problem); },
      [](sedov_run<D>& state) { sedov::create_lattice(state, state.problem); }});
