@@ -1,6 +1,6 @@
-// The Courant condition of one particle's time step (Monaghan 1992, ARA&A 30, 543, sec. 10;
-// with the signal velocity of Springel 2005, eq. 16): a sound wave, or an approaching neighbour,
-// crosses at most a fraction C of the particle's smoothing length in one step.
+// The Courant condition of one particle's time step (Monaghan 1992, ARA&A 30, 543; GADGET-2:
+// Springel 2005, MNRAS 364, 1105, eq. 16, with its signal velocity): a sound wave, or an
+// approaching neighbour, crosses at most a fraction C of the particle's smoothing length.
 #pragma once
 
 #include <Kokkos_Core.hpp>
