@@ -18,7 +18,9 @@
 
 #include "specialization/sph/files/particle_input.hh"
 #include "specialization/sph/files/snapshot_settings.hh"
+#include "specialization/sph/model/fields.hh"
 
+#include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"
 
 #include <cmath>
@@ -31,19 +33,16 @@
 
 namespace flecsph::sph {
 
-/// Our field datasets (fields.hh, the tree's x y z id m h) in SWIFT's initial-conditions names.
+/// Our field datasets in SWIFT's initial-conditions names, as the fields' definitions give them
+/// (model/fields.hh and the tree's own: in_swift_initial_conditions): a vector's component k
+/// (k < D) is column k of the N x 3 dataset.
 template<int D>
 std::map<std::string, flecsi_lite::io::gadget_reader::column> swift_initial_columns() {
-  std::map<std::string, flecsi_lite::io::gadget_reader::column> columns{{"m", {"Masses"}},
-                                                                        {"h", {"SmoothingLength"}},
-                                                                        {"u", {"InternalEnergy"}},
-                                                                        {"id", {"ParticleIDs"}},
-                                                                        {"rho", {"Density"}}};
-  const char* axes[] = {"x", "y", "z"};
-  const char* velocities[] = {"vx", "vy", "vz"};
-  for (int k = 0; k < D; ++k) {
-    columns[axes[k]] = {"Coordinates", k};
-    columns[velocities[k]] = {"Velocities", k};
+  std::map<std::string, flecsi_lite::io::gadget_reader::column> columns;
+  for (const auto& field : flecsi_lite::data::registered_fields<particle_tree<D>>()) {
+    const std::string& name = field.persistence.swift().initial_conditions_dataset;
+    if (name.empty()) continue;
+    for (int k = 0; k < field.components; ++k) columns[field.datasets[k]] = {name, k};
   }
   return columns;
 }

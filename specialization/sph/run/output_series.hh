@@ -57,7 +57,7 @@ void open_output(app_state<D>& s) {
   s.writer->set_attribute("gamma", s.physics.eos.ideal.gamma);
   s.writer->set_attribute("ranks", static_cast<std::int64_t>(flecsi_lite::runtime::size()));
   for (const auto& [name, value] : s.description) s.writer->set_attribute(name, value);
-  for (const auto& [name, value] : h5part_unit_attributes<D>(s.output_keys.units, s.physics.gravity.enabled))
+  for (const auto& [name, value] : h5part_unit_attributes<D>(s.output_keys.units, s))
     s.writer->set_attribute(name, value);
   if (!s.restarted) return write_output_step(s);
   if (s.writer->steps_written() == 0) {
