@@ -1,4 +1,4 @@
-// main() of an SPH app (app.hh, defined in app.cc): the app's definition (its name, help, problem
+// main() of an SPH app (app.hh, defined in app_main.cc): the app's definition (its name, help, problem
 // keys, defaults, options and checks) on the framework's app frame (flecsi_lite/app.hh) with the
 // SPH keys.
 #pragma once
