@@ -2,6 +2,7 @@
 // struct, choice keys from name tables), logging, timers.
 #pragma once
 #include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/runtime/derived_values.hh"
 #include "flecsi_lite/runtime/log.hh"
 #include "flecsi_lite/runtime/name_table.hh"
 #include "flecsi_lite/runtime/options.hh"

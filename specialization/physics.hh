@@ -11,4 +11,5 @@
 #include "specialization/physics/radiation_reaction.hh"
 #include "specialization/physics/smoothing_length.hh"
 #include "specialization/physics/tait.hh"
+#include "specialization/physics/time_step.hh"
 #include "specialization/physics/viscosity.hh"

@@ -432,6 +432,8 @@ int run(const app::run_context& context, const bns::star_cache_entry* making) {
       ": the relaxation damps every particle's velocity in every step, which "
       "individual steps do not take; relax with time_steps = global, or set "
       "relaxation_time = 0");
+  // The star's mass, radius and G stay as root attributes: a binary set-up reads them back from
+  // the star file (create_binary); K and the dynamical time are what the keys imply.
   s.description = {{"star_mass", s.problem.mass},
                    {"star_radius", s.problem.radius},
                    {"polytropic_constant", s.K},

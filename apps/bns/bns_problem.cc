@@ -157,13 +157,14 @@ void check_problem(const problem& problem, const sph::physics_settings& physics,
   }
   if (physics.eos.type == flecsph::physics::eos_type::isothermal)
     throw parameter_error("bns: eos = isothermal: the stars need eos = polytropic or ideal_gas (gamma 2)");
-  sph::checked_length("bns", "star radius", problem.radius, "star_radius");
-  sph::checked_positive("bns", "dynamical time", dynamical_time(problem.mass, problem.radius, physics.gravity.constant),
-                        "star_mass, star_radius, gravitational_constant");
+  flecsi_lite::runtime::checked_length("bns", "star radius", problem.radius, "star_radius");
+  flecsi_lite::runtime::checked_positive("bns", "dynamical time",
+                                         dynamical_time(problem.mass, problem.radius, physics.gravity.constant),
+                                         "star_mass, star_radius, gravitational_constant");
   if (problem.kind == setup::star) {
-    sph::checked_count("bns", "particles", double(problem.particles), "particles");
-    sph::checked_length("bns", "mean spacing", problem.radius * std::cbrt(4.0 / double(problem.particles)),
-                        "particles, star_radius");
+    flecsi_lite::runtime::checked_count("bns", "particles", double(problem.particles), "particles");
+    flecsi_lite::runtime::checked_length(
+      "bns", "mean spacing", problem.radius * std::cbrt(4.0 / double(problem.particles)), "particles, star_radius");
     return;
   }
   if (problem.star_file.empty() && problem.star_cache.empty())

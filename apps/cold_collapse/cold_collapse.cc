@@ -86,10 +86,6 @@ int run(const app::run_context& context) {
   s.problem = cold_collapse::problem_parameters().read(context.parameters());
   if (!s.physics.gravity.enabled) throw runtime::parameter_error("cold_collapse: the collapse needs gravity = true");
   s.gravitational_constant = s.physics.gravity.constant;
-  s.description = {{"sphere_radius", s.problem.radius},
-                   {"sphere_mass", s.problem.mass},
-                   {"radius_mass_fraction", s.problem.mass_fraction},
-                   {"gravitational_constant", s.gravitational_constant}};
   auto m = sph::make_app_control_model<cold_collapse_run>(
     {[](cold_collapse_run& state) {
        cold_collapse::check_problem(state.problem, state.physics, state.gravitational_constant);

@@ -35,18 +35,20 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
 
 void check_problem(const problem& problem, const sph::physics_settings& physics, double gravitational_constant) {
   const std::string keys = "particles, sphere_radius";
-  sph::checked_count("cold_collapse", "particles", double(problem.particles), "particles");
-  const double radius = sph::checked_length("cold_collapse", "sphere radius", problem.radius, "sphere_radius");
-  const double spacing =
-    sph::checked_length("cold_collapse", "mean spacing", radius * std::cbrt(4.0 / double(problem.particles)), keys);
-  sph::checked_length("cold_collapse", "smoothing length", physics.eta * spacing, "eta, " + keys);
-  sph::checked_positive("cold_collapse", "particle mass", problem.mass / double(problem.particles),
-                        "sphere_mass, particles");
-  sph::checked_positive("cold_collapse", "internal energy",
-                        problem.thermal_energy * gravitational_constant * problem.mass / radius,
-                        "thermal_energy, gravitational_constant, sphere_mass, sphere_radius");
-  sph::checked_positive("cold_collapse", "free-fall time", free_fall_time(problem, gravitational_constant),
-                        "sphere_radius, sphere_mass, gravitational_constant");
+  flecsi_lite::runtime::checked_count("cold_collapse", "particles", double(problem.particles), "particles");
+  const double radius =
+    flecsi_lite::runtime::checked_length("cold_collapse", "sphere radius", problem.radius, "sphere_radius");
+  const double spacing = flecsi_lite::runtime::checked_length(
+    "cold_collapse", "mean spacing", radius * std::cbrt(4.0 / double(problem.particles)), keys);
+  flecsi_lite::runtime::checked_length("cold_collapse", "smoothing length", physics.eta * spacing, "eta, " + keys);
+  flecsi_lite::runtime::checked_positive("cold_collapse", "particle mass", problem.mass / double(problem.particles),
+                                         "sphere_mass, particles");
+  flecsi_lite::runtime::checked_positive("cold_collapse", "internal energy",
+                                         problem.thermal_energy * gravitational_constant * problem.mass / radius,
+                                         "thermal_energy, gravitational_constant, sphere_mass, sphere_radius");
+  flecsi_lite::runtime::checked_positive("cold_collapse", "free-fall time",
+                                         free_fall_time(problem, gravitational_constant),
+                                         "sphere_radius, sphere_mass, gravitational_constant");
 }
 
 double free_fall_time(const problem& problem, double gravitational_constant) {

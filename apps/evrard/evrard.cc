@@ -67,10 +67,6 @@ int run(const app::run_context& context) {
   sph::require_equation_of_state(s.physics, flecsph::physics::eos_type::ideal_gas, s.program, "the Evrard collapse");
   if (!s.physics.gravity.enabled) throw runtime::parameter_error("evrard: the Evrard collapse needs gravity = true");
   s.gravitational_constant = s.physics.gravity.constant;
-  s.description = {{"sphere_radius", s.problem.radius},
-                   {"sphere_mass", s.problem.mass},
-                   {"thermal_energy", s.problem.thermal_energy},
-                   {"gravitational_constant", s.gravitational_constant}};
   auto m = sph::make_app_control_model<evrard_run>(
     {[](evrard_run& state) { evrard::check_problem(state.problem, state.physics, state.gravitational_constant); },
      [](evrard_run& state) { evrard::create_sphere(state, state.problem, state.gravitational_constant); }});

@@ -25,15 +25,18 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
 
 void check_problem(const problem& problem, const sph::physics_settings& physics, double gravitational_constant) {
   const std::string keys = "particles, sphere_radius";
-  sph::checked_count("evrard", "particles", double(problem.particles), "particles");
-  const double radius = sph::checked_length("evrard", "sphere radius", problem.radius, "sphere_radius");
-  const double spacing = sph::checked_length("evrard", "mean spacing at the surface",
-                                             radius * std::cbrt(4.0 / double(problem.particles)), keys);
-  sph::checked_length("evrard", "smoothing length at the surface", physics.eta * spacing, "eta, " + keys);
-  sph::checked_positive("evrard", "particle mass", problem.mass / double(problem.particles), "sphere_mass, particles");
-  sph::checked_positive("evrard", "initial internal energy",
-                        problem.thermal_energy * gravitational_constant * problem.mass / radius,
-                        "thermal_energy, gravitational_constant, sphere_mass, sphere_radius");
+  flecsi_lite::runtime::checked_count("evrard", "particles", double(problem.particles), "particles");
+  const double radius =
+    flecsi_lite::runtime::checked_length("evrard", "sphere radius", problem.radius, "sphere_radius");
+  const double spacing = flecsi_lite::runtime::checked_length(
+    "evrard", "mean spacing at the surface", radius * std::cbrt(4.0 / double(problem.particles)), keys);
+  flecsi_lite::runtime::checked_length("evrard", "smoothing length at the surface", physics.eta * spacing,
+                                       "eta, " + keys);
+  flecsi_lite::runtime::checked_positive("evrard", "particle mass", problem.mass / double(problem.particles),
+                                         "sphere_mass, particles");
+  flecsi_lite::runtime::checked_positive("evrard", "initial internal energy",
+                                         problem.thermal_energy * gravitational_constant * problem.mass / radius,
+                                         "thermal_energy, gravitational_constant, sphere_mass, sphere_radius");
 }
 
 initial_energies analytic_energies(const problem& problem, double gravitational_constant) {

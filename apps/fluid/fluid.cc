@@ -444,11 +444,7 @@ int run(const app::run_context& context) {
         << ", exponent " << s.fluid.eos.exponent << ")";
     s.equation_of_state = eos.str();
   }
-  s.description = {{"length", s.problem.length},
-                   {"dx", s.layout.dx},
-                   {"rho0", s.fluid.eos.reference_density},
-                   {"c0", s.fluid.eos.reference_sound_speed},
-                   {"gravity", s.fluid.body_force[1]}};
+  s.description = {{"dx", s.layout.dx}};  // the particle spacing the keys imply (the keys: parameters)
   auto m = fl::make_fluid_control_model<fluid_run<D>>({set_domain<D>, create<D>});
   m.action("initialize", "measure", measure<D>).after("diagnostics");
   m.action("analyze", "measure", measure<D>).after("conserved_quantities");

@@ -33,7 +33,6 @@ int run(const app::run_context& context) {
   if (s.layout.layout == glass::start_layout::glass) glass::tiles_per_side(s.layout, s.problem.per_side, s.program);
   if (s.physics.eos.type != flecsph::physics::eos_type::ideal_gas)
     throw runtime::parameter_error("noh: the exact solution needs eos = ideal_gas");
-  s.description = {{"rho0", s.problem.rho0}, {"inflow_speed", s.problem.speed}};
   auto m = sph::make_app_control_model<noh_run<D>>(
     {[](noh_run<D>& state) { noh::set_open_domain(state, state.problem); },
      [](noh_run<D>& state) {

@@ -2,6 +2,8 @@
 // quantities they imply (noh_problem.hh).
 #include "noh_problem.hh"
 
+#include "cubic_lattice_checks.hh"
+
 #include <cmath>
 
 namespace noh {
@@ -25,16 +27,10 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
 }
 
 void check_problem(const problem& problem, const sph::physics_settings& physics, int dimension) {
-  const std::string lattice_keys = "box_side, particles_per_side";
-  sph::checked_count("noh", "particles", std::pow(double(problem.per_side), dimension),
-                     "particles_per_side, dimension");
-  const double spacing = sph::checked_length(
-    "noh", "lattice spacing",
-    sph::checked_length("noh", "box side", problem.side, "box_side") / double(problem.per_side), lattice_keys);
-  sph::checked_length("noh", "smoothing length", physics.eta * spacing, "eta, " + lattice_keys);
-  sph::checked_positive("noh", "particle mass", problem.rho0 * std::pow(spacing, dimension), "rho0, " + lattice_keys);
-  sph::checked_positive("noh", "internal energy of the gas",
-                        physics.eos.ideal.internal_energy(problem.rho0, problem.pressure), "pressure, rho0, gamma");
+  lattices::check_cubic_lattice("noh", {problem.per_side, problem.side, problem.rho0}, physics.eta, dimension);
+  flecsi_lite::runtime::checked_positive("noh", "internal energy of the gas",
+                                         physics.eos.ideal.internal_energy(problem.rho0, problem.pressure),
+                                         "pressure, rho0, gamma");
 }
 
 }  // namespace noh

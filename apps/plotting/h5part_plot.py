@@ -8,6 +8,7 @@ import argparse
 import csv
 import io
 import os
+import re
 import subprocess
 import sys
 
@@ -56,11 +57,18 @@ def step_times(path, program):
 
 
 def number(attributes, key, default):
-    """A numeric root attribute as a float (HDF5 tools may store scalars as 1-element arrays)."""
-    value = attributes.get(key, default)
-    if hasattr(value, "__len__"):
-        value = value[0]
-    return float(value)
+    """A numeric root attribute as a float (HDF5 tools may store scalars as 1-element arrays), or
+    else the value of the parameter `key` in the file's resolved parameters (its `parameters`
+    attribute, where a problem's keys are: rho_left, blast_energy, ...), or else `default`."""
+    if key in attributes:
+        value = attributes[key]
+        if hasattr(value, "__len__"):
+            value = value[0]
+        return float(value)
+    text = attributes.get("parameters", b"")
+    text = text.decode() if isinstance(text, bytes) else str(text)
+    match = re.search(rf"^{re.escape(key)}\s*=\s*([^\s#]+)", text, re.MULTILINE)
+    return float(match.group(1)) if match else float(default)
 
 
 def command_line(description):

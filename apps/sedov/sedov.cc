@@ -64,7 +64,6 @@ int run(const app::run_context& context) {
   if (s.layout.layout == glass::start_layout::glass) glass::tiles_per_side(s.layout, s.problem.per_side, s.program);
   sph::require_equation_of_state(s.physics, flecsph::physics::eos_type::ideal_gas, s.program,
                                  "the similarity solution");
-  s.description = {{"blast_energy", s.problem.energy}, {"rho0", s.problem.rho0}};
   auto m = sph::make_app_control_model<sedov_run<D>>(
     {[](sedov_run<D>& state) { sedov::set_periodic_box(state, state.problem); },
      [](sedov_run<D>& state) {

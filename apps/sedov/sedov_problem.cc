@@ -2,6 +2,8 @@
 // quantities they imply (sedov_problem.hh).
 #include "sedov_problem.hh"
 
+#include "cubic_lattice_checks.hh"
+
 #include <cmath>
 
 namespace sedov {
@@ -26,21 +28,15 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
 }
 
 void check_problem(const problem& problem, const sph::physics_settings& physics, int dimension) {
-  const std::string lattice_keys = "box_side, particles_per_side";
-  sph::checked_count("sedov", "particles", std::pow(double(problem.per_side), dimension),
-                     "particles_per_side, dimension");
-  const double spacing = sph::checked_length(
-    "sedov", "lattice spacing",
-    sph::checked_length("sedov", "box side", problem.side, "box_side") / double(problem.per_side), lattice_keys);
-  sph::checked_length("sedov", "smoothing length", physics.eta * spacing, "eta, " + lattice_keys);
-  sph::checked_positive("sedov", "particle mass", problem.rho0 * std::pow(spacing, dimension), "rho0, " + lattice_keys);
-  sph::checked_positive("sedov", "mass of the box", problem.rho0 * std::pow(problem.side, dimension), "rho0, box_side");
-  sph::checked_positive("sedov", "specific energy of the blast",
-                        problem.energy / (problem.rho0 * std::pow(problem.side, dimension)),
-                        "blast_energy, rho0, box_side");
-  sph::checked_positive("sedov", "internal energy of the medium",
-                        physics.eos.ideal.internal_energy(problem.rho0, problem.background_pressure),
-                        "background_pressure, rho0, gamma");
+  lattices::check_cubic_lattice("sedov", {problem.per_side, problem.side, problem.rho0}, physics.eta, dimension);
+  flecsi_lite::runtime::checked_positive("sedov", "mass of the box", problem.rho0 * std::pow(problem.side, dimension),
+                                         "rho0, box_side");
+  flecsi_lite::runtime::checked_positive("sedov", "specific energy of the blast",
+                                         problem.energy / (problem.rho0 * std::pow(problem.side, dimension)),
+                                         "blast_energy, rho0, box_side");
+  flecsi_lite::runtime::checked_positive("sedov", "internal energy of the medium",
+                                         physics.eos.ideal.internal_energy(problem.rho0, problem.background_pressure),
+                                         "background_pressure, rho0, gamma");
 }
 
 }  // namespace sedov

@@ -74,10 +74,6 @@ int run(const app::run_context& context) {
   sph::configure(s, context);
   s.problem = sod::problem_parameters().read(context.parameters());
   sph::require_equation_of_state(s.physics, flecsph::physics::eos_type::ideal_gas, s.program, "the exact solution");
-  s.description = {
-    {"rho_left", s.problem.rho_left}, {"p_left", s.problem.p_left},           {"rho_right", s.problem.rho_right},
-    {"p_right", s.problem.p_right},   {"x_interface", s.problem.x_interface}, {"x_min", s.problem.x_min},
-    {"x_max", s.problem.x_max}};
   auto m =
     sph::make_app_control_model<sod_run<D>>({[](sod_run<D>& state) { sod::set_tube_domain(state, state.problem); },
                                              [](sod_run<D>& state) { sod::create_tube(state, state.problem); }});

@@ -57,9 +57,9 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
 }
 
 namespace {
-using sph::checked_count;
-using sph::checked_length;
-using sph::checked_positive;
+using flecsi_lite::runtime::checked_count;
+using flecsi_lite::runtime::checked_length;
+using flecsi_lite::runtime::checked_positive;
 
 // The keys each derived quantity comes from, named in the errors of its checks.
 const std::string left_keys = "x_min, x_interface", right_keys = "x_interface, x_max";

@@ -12,6 +12,13 @@
 //             the entity's index in the step); the RULE checks every value read (also at restart).
 // A field that exists in files ONLY WITH a FEATURE of the run (a name the specialization gives,
 // e.g. "gravity") keeps its roles only in runs that have it (without it: none).
+// A field's UNITS are the powers of the base units (mass, length, time) of its values; a field
+// IN SNAPSHOTS is written to the SWIFT/GADGET-layout snapshots (io/snapshot_writer.hh) under
+// SWIFT's dataset name with a description, whatever its roles in H5Part files (the last
+// accelerations are checkpoint data in H5Part, but a snapshot holds them), and may be read from
+// SWIFT-format initial conditions under the name SWIFT reads (its hydro_io.h reads "Density" and
+// writes "Densities"). A snapshot quantity of MOVING PARTICLES ONLY is absent for particles held
+// fixed in place (walls).
 //
 //   static inline const definition<double> density{
 //     "rho", persist::output().restart().initial_optional(persist::at_least(0, "densities"))};
@@ -58,6 +65,22 @@ inline value_rule one_of(std::initializer_list<double> allowed, const std::strin
             return false;
           }};
 }
+
+/// Powers of the base units (mass, length, time) of a quantity: a velocity is {0, 1, -1}, a
+/// density in D dimensions {1, -D, 0}; all zero for a pure number.
+struct unit_exponents {
+  float mass = 0, length = 0, time = 0;
+};
+
+/// A field in SWIFT's layout (Schaller et al. 2024; SWIFT's hydro/*/hydro_io.h): the snapshot
+/// dataset it is written to and SWIFT's "Description" of it, the initial-conditions dataset it
+/// is read from ("" when none), and whether particles held fixed have it.
+struct swift_naming {
+  std::string snapshot_dataset;  ///< "" when the field is in no snapshot
+  std::string description;
+  std::string initial_conditions_dataset;
+  bool moving_particles_only = false;
+};
 
 /// The roles of a field in files, combinable: role::output | role::restart.
 enum class role : unsigned { none = 0, output = 1, restart = 2, initial = 4 };
@@ -107,6 +130,25 @@ class persistence {
   }
   /// Optional initial data that defaults to the entity's index in the step (for ids).
   persistence initial_optional_index() const { return initial(initial_reading::optional_index, {}); }
+  /// The units of the field's values (default: a pure number).
+  persistence units(float mass, float length, float time) const {
+    return with([=](persistence& p) { p.units_ = {mass, length, time}; });
+  }
+  /// Written to every snapshot as SWIFT's dataset `dataset`, with SWIFT's "Description".
+  persistence in_snapshots(std::string dataset, std::string description) const {
+    return with([&](persistence& p) {
+      p.swift_.snapshot_dataset = std::move(dataset);
+      p.swift_.description = std::move(description);
+    });
+  }
+  /// Read from SWIFT-format initial conditions under `dataset` (when it has role initial).
+  persistence in_swift_initial_conditions(std::string dataset) const {
+    return with([&dataset](persistence& p) { p.swift_.initial_conditions_dataset = std::move(dataset); });
+  }
+  /// In snapshots for moving particles only: particles held fixed (walls) have no such dataset.
+  persistence moving_particles_only() const {
+    return with([](persistence& p) { p.swift_.moving_particles_only = true; });
+  }
 
   role roles() const { return roles_; }
   bool has(role wanted) const { return any_of(roles_, wanted); }
@@ -115,6 +157,8 @@ class persistence {
   const value_rule& rule() const { return rule_; }
   /// The feature the field's roles depend on ("" when none).
   const std::string& feature() const { return feature_; }
+  const unit_exponents& units() const { return units_; }
+  const swift_naming& swift() const { return swift_; }
 
   /// The dataset names of a field called `field_name` with `components` components: as given,
   /// or the defaults.
@@ -147,6 +191,8 @@ class persistence {
   initial_reading reading_ = initial_reading::optional;
   value_rule rule_;
   std::string feature_;
+  unit_exponents units_;
+  swift_naming swift_;
 };
 
 }  // namespace flecsi_lite::data

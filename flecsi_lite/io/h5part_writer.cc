@@ -29,7 +29,8 @@ std::string fingerprint(const std::string& name, const attribute_value& value) {
 }
 }  // namespace
 
-h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how) : path_(std::move(path)), comm_(comm) {
+h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how)
+    : path_(std::move(path)), comm_(comm), output_(path_, comm) {
   hdf5_quiet_scope quiet;
   // Before anything is written: the final name and the temporary one must be absent or regular
   // files, or the rename would replace a device, a folder or a link (and H5Fcreate follow it).
@@ -73,17 +74,17 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how) : path_(
                                              (append_to_copy ? " (to continue the series in it; remove it or "
                                                                "choose another output file)"
                                                              : "")};
-  file_ = file_handle(id);
+  output_.file() = file_handle(id);
   try {
     raise_if_any(comm_, failed);
   } catch (...) {
-    file_.release();  // a parallel close on only the ranks that opened it would never return
+    output_.file().release();  // a parallel close on only the ranks that opened it would never return
     throw;
   }
 
   if (append_to_copy) {
     agree(comm_, [&] {
-      const auto steps = h5part::step_indices(file_.get());
+      const auto steps = h5part::step_indices(output_.file().get());
       for (std::size_t k = 0; k < steps.size(); ++k)
         if (steps[k] != static_cast<std::int64_t>(k))
           throw layout_error("cannot append to '" + path_ + "': its steps are not Step#0 to Step#" +
@@ -97,7 +98,7 @@ h5part_writer::h5part_writer(std::string path, MPI_Comm comm, mode how) : path_(
 h5part_writer::~h5part_writer() { abandon(); }
 
 void h5part_writer::abandon() noexcept {
-  if (committing_) {
+  if (output_.awaits_commit()) {
     if (rank_of(comm_) == 0)
       log::warn() << "h5part: '" << path_ << "' was left unchanged (the run did not pass its checks); "
                   << "its complete output of " << steps_written_ << " steps is in '" << partial_path() << "'";
@@ -106,14 +107,14 @@ void h5part_writer::abandon() noexcept {
   if (!is_open()) return;
   try {
     hdf5_quiet_scope quiet;
-    if (!storage_failed_ && in_step()) {
+    if (!output_.storage_failed() && in_step()) {
       // An unfinished step would look complete to a reader: unlink it.
       step_group_.close();
-      H5Ldelete(file_.get(), h5part::step_group_name(steps_written_).c_str(), H5P_DEFAULT);
+      H5Ldelete(output_.file().get(), h5part::step_group_name(steps_written_).c_str(), H5P_DEFAULT);
     }
     step_group_.close();
     // The finished steps stay in the partial file when it could be flushed (partial_file.hh).
-    const bool flushed = close_unfinished_file(comm_, file_, partial_path(), storage_failed_);
+    const bool flushed = output_.close_unfinished();
     if (rank_of(comm_) != 0) return;
     if (flushed) {
       log::warn() << "h5part: '" << path_ << "' was not closed; its " << steps_written_ << " finished steps are in '"
@@ -137,7 +138,7 @@ void h5part_writer::set_attribute(const std::string& name, const attribute_value
     throw layout_error("ranks set different root attributes (or values) at the same point in '" + path_ + "'");
   agree(comm_, [&] {
     require_open("set_attribute");
-    write_attribute(file_.get(), name, value);
+    write_attribute(output_.file().get(), name, value);
   });
 }
 
@@ -149,7 +150,7 @@ void h5part_writer::describe_run(const run_description& run) {
 
 std::int64_t h5part_writer::iteration_of(std::int64_t step) const {
   const std::string name = h5part::step_group_name(step);
-  auto group = group_handle(H5Gopen2(file_.get(), name.c_str(), H5P_DEFAULT));
+  auto group = group_handle(H5Gopen2(output_.file().get(), name.c_str(), H5P_DEFAULT));
   if (!group) throw io_error(failure::file, "cannot open " + name + " of '" + partial_path() + "'" + hdf5_reason());
   if (!has_attribute(group.get(), h5part::attribute::step)) return step;
   const std::string what = "attribute 'step' of " + name + " in '" + path_ + "'";
@@ -166,13 +167,13 @@ std::int64_t h5part_writer::drop_steps_from(std::int64_t first_dropped) {
     // Every rank unlinks the same groups: a metadata change, collective in parallel HDF5.
     while (steps_written_ > 0 && iteration_of(steps_written_ - 1) >= first_dropped) {
       const std::string name = h5part::step_group_name(steps_written_ - 1);
-      if (H5Ldelete(file_.get(), name.c_str(), H5P_DEFAULT) < 0)
+      if (H5Ldelete(output_.file().get(), name.c_str(), H5P_DEFAULT) < 0)
         throw io_error(failure::system, "cannot remove " + name + " from '" + partial_path() + "'" + hdf5_reason());
       --steps_written_;
       ++dropped;
     }
     last_iteration_ = steps_written_ > 0 ? iteration_of(steps_written_ - 1) : -1;
-    if (dropped) write_attribute(file_.get(), h5part::attribute::num_steps, std::int64_t{steps_written_});
+    if (dropped) write_attribute(output_.file().get(), h5part::attribute::num_steps, std::int64_t{steps_written_});
   });
   return dropped;
 }
@@ -194,7 +195,7 @@ void h5part_writer::begin_step(const step_info& info) {
     auto creation = property_list_handle(H5Pcreate(H5P_GROUP_CREATE));
     if (!creation || H5Pset_obj_track_times(creation.get(), false) < 0)
       throw io_error(failure::system, "cannot describe group " + name + hdf5_reason());
-    group = group_handle(H5Gcreate2(file_.get(), name.c_str(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
+    group = group_handle(H5Gcreate2(output_.file().get(), name.c_str(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
     if (!group)
       throw io_error(failure::system, "cannot create group " + name + " in '" + partial_path() + "'" + hdf5_reason());
     write_attribute(group.get(), h5part::attribute::time_value, info.time);
@@ -267,7 +268,7 @@ void h5part_writer::write_array(const std::string& name, element_type type, cons
   if (place.global_length > 0 && H5Dwrite(dataset.get(), memory_type(type), memory_space.get(), file_space.get(),
                                           transfer.get(), local_count > 0 ? data : &nothing) < 0)
     failed = failure_record{failure::system, "cannot write " + where + hdf5_reason()};
-  raise_marking_storage_failure(comm_, failed, storage_failed_);
+  output_.raise_marking_storage_failure(failed);
   step_datasets_.insert(name);
   step_length_ = place.global_length;
 }
@@ -280,31 +281,27 @@ void h5part_writer::end_step() {
     if (step_group_.close() < 0)
       throw io_error(failure::system,
                      "cannot close step " + std::to_string(steps_written_) + " of '" + path_ + "'" + hdf5_reason());
-    write_attribute(file_.get(), h5part::attribute::num_steps, std::int64_t{steps_written_ + 1});
+    write_attribute(output_.file().get(), h5part::attribute::num_steps, std::int64_t{steps_written_ + 1});
   });
   ++steps_written_;
   step_datasets_.clear();
   step_length_.reset();
   // The partial file now holds every finished step, should the run stop here.
   std::optional<failure_record> failed;
-  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0)
+  if (H5Fflush(output_.file().get(), H5F_SCOPE_GLOBAL) < 0)
     failed = failure_record{failure::system, "cannot flush '" + partial_path() + "'" + hdf5_reason()};
-  raise_marking_storage_failure(comm_, failed, storage_failed_);
+  output_.raise_marking_storage_failure(failed);
 }
 
 void h5part_writer::finish() {
   if (!is_open()) return;
   if (in_step()) end_step();
-  // A failed flush leaves the file open for abandon().
-  finish_partial_file(comm_, file_, partial_path(), storage_failed_);
-  committing_ = true;
+  output_.finish();  // a failed flush leaves the file open for abandon()
 }
 
 void h5part_writer::commit() {
-  if (!committing_) return;
   // Only now, with every byte written by every rank, does the file take its final name.
-  rename_partial_file(comm_, partial_path(), path_);
-  committing_ = false;
+  output_.commit();
 }
 
 void h5part_writer::close() {

@@ -25,6 +25,7 @@
 
 #include "flecsi_lite/io/attribute_value.hh"
 #include "flecsi_lite/io/detail/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/partial_file.hh"
 #include "flecsi_lite/io/element_type.hh"
 #include "flecsi_lite/io/step_info.hh"
 #include "flecsi_lite/runtime/context.hh"
@@ -100,13 +101,13 @@ class h5part_writer {
   /// something else than a regular file). Without it, the destructor leaves both files as they are.
   void commit();
 
-  bool is_open() const { return file_.valid(); }
+  bool is_open() const { return output_.is_open(); }
   /// Finished and not yet committed.
-  bool awaits_commit() const { return committing_; }
+  bool awaits_commit() const { return output_.awaits_commit(); }
   bool in_step() const { return step_group_.valid(); }
   std::int64_t steps_written() const { return steps_written_; }
   const std::string& path() const { return path_; }
-  std::string partial_path() const { return path_ + ".partial"; }
+  std::string partial_path() const { return output_.partial_path(); }
 
  private:
   void write_array(const std::string& name, element_type type, const void* data, std::size_t local_count);
@@ -116,12 +117,10 @@ class h5part_writer {
 
   std::string path_;
   MPI_Comm comm_;
-  hdf5_handle file_;
+  partial_file output_;  // the file under its temporary name, finished, committed
   hdf5_handle step_group_;
   std::int64_t steps_written_ = 0;
   std::int64_t last_iteration_ = -1;
-  bool committing_ = false;                   // finished, the rename still to come
-  bool storage_failed_ = false;               // a data write or flush failed on some rank
   std::set<std::string> step_datasets_;       // names written in the open step
   std::optional<std::uint64_t> step_length_;  // global length of the open step's datasets
 };

@@ -98,7 +98,8 @@ hdf5_handle untimed_creation(hid_t class_id) {
 }
 }  // namespace
 
-snapshot_writer::snapshot_writer(std::string path, MPI_Comm comm) : path_(std::move(path)), comm_(comm) {
+snapshot_writer::snapshot_writer(std::string path, MPI_Comm comm)
+    : path_(std::move(path)), comm_(comm), output_(path_, comm) {
   hdf5_quiet_scope quiet;
   agree(comm_, [&] {
     if (rank_of(comm_) != 0) return;
@@ -112,11 +113,11 @@ snapshot_writer::snapshot_writer(std::string path, MPI_Comm comm) : path_(std::m
   std::optional<failure_record> failed;
   if (id < 0)
     failed = failure_record{failure::file, "cannot create '" + partial_path() + "' for writing" + hdf5_reason()};
-  file_ = file_handle(id);
+  output_.file() = file_handle(id);
   try {
     raise_if_any(comm_, failed);
   } catch (...) {
-    file_.release();  // a parallel close on only the ranks that opened it would never return
+    output_.file().release();  // a parallel close on only the ranks that opened it would never return
     throw;
   }
 }
@@ -124,7 +125,7 @@ snapshot_writer::snapshot_writer(std::string path, MPI_Comm comm) : path_(std::m
 snapshot_writer::~snapshot_writer() { abandon(); }
 
 void snapshot_writer::abandon() noexcept {
-  if (committing_) {
+  if (output_.awaits_commit()) {
     if (rank_of(comm_) == 0)
       log::warn() << "snapshot: '" << path_ << "' was left unchanged; the complete snapshot is in '" << partial_path()
                   << "'";
@@ -133,7 +134,7 @@ void snapshot_writer::abandon() noexcept {
   if (!is_open()) return;
   try {
     // An unfinished snapshot is of no use to anyone: removed in every case.
-    close_unfinished_file(comm_, file_, partial_path(), storage_failed_);
+    output_.close_unfinished();
     if (rank_of(comm_) == 0) {
       std::error_code error;
       std::filesystem::remove(partial_path(), error);
@@ -149,11 +150,11 @@ void snapshot_writer::require_open(const char* operation) const {
 }
 
 hdf5_handle snapshot_writer::open_group(const std::string& group) {
-  if (group.empty()) return group_handle(H5Gopen2(file_.get(), "/", H5P_DEFAULT));
+  if (group.empty()) return group_handle(H5Gopen2(output_.file().get(), "/", H5P_DEFAULT));
   if (!valid_name(group)) throw usage_error("'" + group + "' is not a valid group name (in '" + path_ + "')");
-  const htri_t exists = H5Lexists(file_.get(), group.c_str(), H5P_DEFAULT);
-  auto handle = exists > 0 ? group_handle(H5Gopen2(file_.get(), group.c_str(), H5P_DEFAULT))
-                           : group_handle(H5Gcreate2(file_.get(), group.c_str(), H5P_DEFAULT,
+  const htri_t exists = H5Lexists(output_.file().get(), group.c_str(), H5P_DEFAULT);
+  auto handle = exists > 0 ? group_handle(H5Gopen2(output_.file().get(), group.c_str(), H5P_DEFAULT))
+                           : group_handle(H5Gcreate2(output_.file().get(), group.c_str(), H5P_DEFAULT,
                                                      untimed_creation(H5P_GROUP_CREATE).get(), H5P_DEFAULT));
   if (!handle)
     throw io_error(failure::system, "cannot create group " + group + " in '" + partial_path() + "'" + hdf5_reason());
@@ -221,22 +222,16 @@ void snapshot_writer::write_array(const std::string& group, const std::string& n
   if (place.global_length > 0 && H5Dwrite(dataset.get(), memory_type(type), memory_space.get(), file_space.get(),
                                           transfer.get(), local_rows > 0 ? data : nothing) < 0)
     failed = failure_record{failure::system, "cannot write " + where + hdf5_reason()};
-  raise_marking_storage_failure(comm_, failed, storage_failed_);
+  output_.raise_marking_storage_failure(failed);
   datasets_.insert(group + "/" + name);
 }
 
 void snapshot_writer::finish() {
   if (!is_open()) return;
-  // A failed flush leaves the file open for abandon().
-  finish_partial_file(comm_, file_, partial_path(), storage_failed_);
-  committing_ = true;
+  output_.finish();  // a failed flush leaves the file open for abandon()
 }
 
-void snapshot_writer::commit() {
-  if (!committing_) return;
-  rename_partial_file(comm_, partial_path(), path_);
-  committing_ = false;
-}
+void snapshot_writer::commit() { output_.commit(); }
 
 void snapshot_writer::close() {
   finish();

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "flecsi_lite/io/detail/hdf5_handle.hh"
+#include "flecsi_lite/io/detail/partial_file.hh"
 #include "flecsi_lite/io/element_type.hh"
 #include "flecsi_lite/runtime/context.hh"
 
@@ -84,9 +85,9 @@ class snapshot_writer {
   /// something else than a regular file).
   void commit();
 
-  bool is_open() const { return file_.valid(); }
+  bool is_open() const { return output_.is_open(); }
   const std::string& path() const { return path_; }
-  std::string partial_path() const { return path_ + ".partial"; }
+  std::string partial_path() const { return output_.partial_path(); }
 
  private:
   void write_array(const std::string& group, const std::string& name, element_type type, const void* data,
@@ -97,9 +98,7 @@ class snapshot_writer {
 
   std::string path_;
   MPI_Comm comm_;
-  hdf5_handle file_;
-  bool committing_ = false;         // finished, the rename still to come
-  bool storage_failed_ = false;     // a data write or flush failed on some rank
+  partial_file output_;             // the file under its temporary name, finished, committed
   std::set<std::string> datasets_;  // "group/name" of the datasets written
 };
 

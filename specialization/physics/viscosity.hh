@@ -1,6 +1,7 @@
 // Pair terms of SPH dissipation: the Monaghan & Gingold (1983) artificial viscosity Pi_ab (seed
 // eqs. 1.10-1.11) with the Balsara (1995) switch, the signal velocity of Springel (2005, eq. 13)
-// for the Courant time step, and the artificial conductivity of Price (2008, JCP 227, 10040).
+// that the Courant time step takes (time_step.hh), and the artificial conductivity of Price
+// (2008, JCP 227, 10040).
 //
 // The pair functions are templates over the number type (a double, or a pack of lanes of
 // physics/simd.hh): the SIMD force loop and the scalar code share one formula.
@@ -88,11 +89,6 @@ KOKKOS_INLINE_FUNCTION T signal_velocity(T c_a, T c_b, T r_dot_v, T r, double be
 template<class T>
 KOKKOS_INLINE_FUNCTION T signal_velocity_from_inverse(T c_a, T c_b, T r_dot_v, T inverse_r, double beta_signal = 3.0) {
   return signal_velocity_of_approach(c_a, c_b, T(r_dot_v * inverse_r), beta_signal);
-}
-
-/// Courant time step of one particle, C h / max_b v_sig,ab.
-KOKKOS_INLINE_FUNCTION double courant_time_step(double courant, double h, double max_signal_velocity) {
-  return courant * h / max_signal_velocity;
 }
 
 /// Signal speed of the artificial conductivity, v_sig^u = sqrt(|P_a - P_b| / rho_ab) with

@@ -23,7 +23,7 @@
   EXTERN template void progress_line<D>(simulation<D>&);           \
   EXTERN template void run_summary<D>(simulation<D>&);
 
-/// The app frame of app.hh: configuration, initial data, self-gravity, output and checkpoints.
+/// The app frame of run/app.hh: configuration, initial data, self-gravity, output and checkpoints.
 #define FLECSPH_SPH_APP_INSTANCES(EXTERN, D)                                              \
   EXTERN template void configure<D>(app_state<D>&, const flecsi_lite::app::run_context&); \
   EXTERN template gravity_record update_gravity<D>(simulation<D>&);                       \
@@ -35,4 +35,5 @@
   EXTERN template void detail::open_statistics<D>(app_state<D>&);                         \
   EXTERN template void detail::statistics_row<D>(app_state<D>&);                          \
   EXTERN template void detail::check_run_limits<D>(app_state<D>&);                        \
-  EXTERN template void detail::checkpoint<D>(app_state<D>&);
+  EXTERN template void detail::checkpoint<D>(app_state<D>&);                              \
+  EXTERN template void detail::close_output<D>(app_state<D>&);

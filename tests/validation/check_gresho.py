@@ -7,24 +7,19 @@ t = 1: 0.04).
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "apps", "gresho"))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "apps", "plotting"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import validation_arguments  # noqa: E402
+
+validation_arguments.use_app_modules("gresho")
 import gresho_analysis  # noqa: E402
-import h5part_plot  # noqa: E402
 
 PROGRAM = "check_gresho"
 
 
 def main():
-    if len(sys.argv) != 3:
-        sys.exit(__doc__)
-    if not os.path.isfile(sys.argv[1]):
-        print("%s: '%s' does not exist (the run did not write it)" % (PROGRAM, sys.argv[1]), file=sys.stderr)
-        sys.exit(3)
-    time, data, _ = h5part_plot.read_step(sys.argv[1], None, "check_gresho")
+    time, data, _, (bound,) = validation_arguments.last_step(PROGRAM, __doc__, 1)
     r, v_phi = gresho_analysis.polar(data)
     error = gresho_analysis.l1_error(r, v_phi)
-    bound = float(sys.argv[2])
     print("Gresho vortex at t = %.6g, %d particles: binned L1 error of v_phi %.5f (bound %g): %s" %
           (time, len(r), error, bound, "pass" if error <= bound else "FAIL"))
     sys.exit(0 if error <= bound else 1)

@@ -7,8 +7,10 @@ bounds: 0.05 and 0.10); prints the measures, the wall heating included.
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "apps", "noh"))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "apps", "plotting"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import validation_arguments  # noqa: E402
+
+validation_arguments.use_app_modules("noh")
 import h5part_plot  # noqa: E402
 import noh_analysis  # noqa: E402
 
@@ -16,12 +18,7 @@ PROGRAM = "check_noh"
 
 
 def main():
-    if len(sys.argv) != 4:
-        sys.exit(__doc__)
-    if not os.path.isfile(sys.argv[1]):
-        print("%s: '%s' does not exist (the run did not write it)" % (PROGRAM, sys.argv[1]), file=sys.stderr)
-        sys.exit(3)
-    time, data, attributes = h5part_plot.read_step(sys.argv[1], None, "check_noh")
+    time, data, attributes, (shock_bound, density_bound) = validation_arguments.last_step(PROGRAM, __doc__, 2)
     number = h5part_plot.number
     dimension = int(number(attributes, "dimension", 2))
     gamma = number(attributes, "gamma", 5.0 / 3.0)
@@ -30,7 +27,6 @@ def main():
     r, _ = noh_analysis.radii(data, dimension)
     m = noh_analysis.measure(r, data["rho"], data["u"], time, dimension, gamma, rho0, speed)
     print(noh_analysis.summary(m, dimension))
-    shock_bound, density_bound = float(sys.argv[2]), float(sys.argv[3])
     ok = abs(m["shock_error"]) <= shock_bound and abs(m["density_error"]) <= density_bound
     print("check_noh: %s (bounds: shock radius %g, post-shock density %g)" % ("pass" if ok else "FAIL", shock_bound,
                                                                              density_bound))

@@ -75,16 +75,41 @@ class ntree : public data::topology_base {
 
   // Built-in fields, with their persistence (data/persistence.hh): written to outputs and
   // checkpoints as x y z (zeros beyond D), id, m, h, and read from initial data (id optional:
-  // the particle's index in the file). The key does not persist: distribute() recomputes it.
+  // the particle's index in the file), with their units and SWIFT names. The key does not
+  // persist: distribute() recomputes it.
   static inline const definition<point<D>> position{
-    "position",
-    persist::as("x", "y", "z").padded().output().restart().initial_required(persist::must_be_finite("positions"))};
+    "position", persist::as("x", "y", "z")
+                  .padded()
+                  .output()
+                  .restart()
+                  .initial_required(persist::must_be_finite("positions"))
+                  .units(0, 1, 0)
+                  .in_snapshots("Coordinates", "Positions of the particles (3 columns; zeros beyond the dimension)")
+                  .in_swift_initial_conditions("Coordinates")};
   static inline const definition<std::uint64_t> id{"id",
-                                                   persist::output().restart().initial_optional_index()};  ///< unique
-  static inline const definition<double> mass{
-    "mass", persist::as("m").output().restart().initial_required(persist::must_be_positive("masses"))};
+                                                   persist::output()
+                                                     .restart()
+                                                     .initial_optional_index()
+                                                     .in_snapshots("ParticleIDs", "Unique identifiers of the particles")
+                                                     .in_swift_initial_conditions("ParticleIDs")};  ///< unique
+  static inline const definition<double> mass{"mass", persist::as("m")
+                                                        .output()
+                                                        .restart()
+                                                        .initial_required(persist::must_be_positive("masses"))
+                                                        .units(1, 0, 0)
+                                                        .in_snapshots("Masses", "Masses of the particles")
+                                                        .in_swift_initial_conditions("Masses")};
+  /// A particle reaches settings().support h (2 h by default, Monaghan's M4 convention); SWIFT's
+  /// h is that reach over its kernel_gamma (Dehnen & Aly 2012).
   static inline const definition<double> smoothing_length{
-    "h", persist::output().restart().initial_required(persist::must_be_positive("smoothing lengths"))};
+    "h", persist::output()
+           .restart()
+           .initial_required(persist::must_be_positive("smoothing lengths"))
+           .units(0, 1, 0)
+           .in_snapshots("SmoothingLengths",
+                         "Smoothing lengths h of the particles; the kernel support radius is 2 h for every kernel "
+                         "(SWIFT's h is support / kernel_gamma)")
+           .in_swift_initial_conditions("SmoothingLength")};
   static inline const definition<key_type> key{"key"};  ///< set by distribute()
 
   explicit ntree(const config& settings = config{});

@@ -75,7 +75,7 @@ struct box {
     return result;
   }
 
-  point<D> center() const {
+  point<D> centre() const {
     point<D> c;
     for (int k = 0; k < D; ++k) c[k] = 0.5 * (lo[k] + hi[k]);
     return c;

@@ -1,7 +1,8 @@
 // What an SPH snapshot holds, in the layout of SWIFT (Schaller et al. 2024; SWIFT's src/common_io.c,
 // parallel_io.c, units.c, hydro/*/hydro_io.h) that GADGET-2 readers also read: the datasets of each
-// particle type with the H5Part datasets they are made of, their units and descriptions, and the
-// unit attributes SWIFT writes on every dataset and in the Units group.
+// particle type, which are the fields whose definitions say so (model/fields.hh: in_snapshots,
+// units), with the H5Part datasets they are made of, and the unit attributes SWIFT writes on every
+// dataset and in the Units group.
 //
 // Smoothing lengths: SmoothingLengths holds our h, whose kernel support radius is H = 2 h for every
 // kernel (physics::kernel_support; Monaghan's M4 convention, the one splash assumes). SWIFT's own
@@ -9,8 +10,12 @@
 // equals 2 / kernel_gamma of ours. The HydroScheme group states the ratio H / h.
 #pragma once
 
+#include "specialization/sph/files/particle_output.hh"
 #include "specialization/sph/files/snapshot_settings.hh"
+#include "specialization/sph/model/fields.hh"
+#include "specialization/sph/model/simulation.hh"
 
+#include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"
 
 #include <cmath>
@@ -28,10 +33,8 @@ inline constexpr int fluid_part_type = 0, wall_part_type = 2, part_type_count = 
 
 inline std::string part_type_group(int type) { return "PartType" + std::to_string(type); }
 
-/// Powers of the base units (mass, length, time) of a quantity.
-struct unit_exponents {
-  float mass = 0, length = 0, time = 0;
-};
+/// Powers of the base units (mass, length, time) of a quantity, declared on its field.
+using unit_exponents = flecsi_lite::data::unit_exponents;
 
 /// One snapshot dataset: its name, the H5Part datasets it is made of (1 column, or 3 for a
 /// vector, zeros for an absent component), its units and SWIFT's "Description".
@@ -42,33 +45,20 @@ struct snapshot_quantity {
   std::string description;
 };
 
-/// The datasets of a particle type in D dimensions (densities are per D-volume: M L^-D); walls
-/// have no velocities, accelerations or heating; the potential only with self-gravity.
+/// The datasets of a particle type of run `s`: every registered field that its definition puts in
+/// snapshots (fields.hh and the tree's own: in_snapshots, with its units), in registry order, but
+/// for walls not those of moving particles only, and not those of a feature the run lacks (the
+/// potential without self-gravity). Densities are per D-volume (M L^-D).
 template<int D>
-std::vector<snapshot_quantity> snapshot_quantities(bool walls, bool gravity) {
-  const float d = static_cast<float>(D);
-  std::vector<snapshot_quantity> q = {
-    {"Coordinates", {"x", "y", "z"}, {0, 1, 0}, "Positions of the particles (3 columns; zeros beyond the dimension)"},
-    {"Velocities", {"vx", "vy", "vz"}, {0, 1, -1}, "Velocities of the particles"},
-    {"Masses", {"m"}, {1, 0, 0}, "Masses of the particles"},
-    {"SmoothingLengths",
-     {"h"},
-     {0, 1, 0},
-     "Smoothing lengths h of the particles; the kernel support radius is 2 h for every kernel (SWIFT's h is "
-     "support / kernel_gamma)"},
-    {"Densities", {"rho"}, {1, -d, 0}, "Densities of the particles (mass per D-dimensional volume)"},
-    {"InternalEnergies", {"u"}, {0, 2, -2}, "Specific internal energies of the particles"},
-    {"Pressures", {"P"}, {1, 2 - d, -2}, "Pressures of the particles"},
-    {"SoundSpeeds", {"cs"}, {0, 1, -1}, "Sound speeds of the particles"},
-    {"ParticleIDs", {"id"}, {0, 0, 0}, "Unique identifiers of the particles"}};
-  if (!walls) {
-    q.push_back(
-      {"Accelerations", {"ax", "ay", "az"}, {0, 1, -2}, "Accelerations of the particles (last force evaluation)"});
-    q.push_back({"InternalEnergyRates", {"du_dt"}, {0, 2, -3}, "Time derivatives of the specific internal energies"});
+std::vector<snapshot_quantity> snapshot_quantities(const simulation<D>& s, bool walls) {
+  std::vector<snapshot_quantity> quantities;
+  for (const auto& field : flecsi_lite::data::registered_fields<particle_tree<D>>()) {
+    const auto& p = field.persistence;
+    if (p.swift().snapshot_dataset.empty() || (walls && p.swift().moving_particles_only)) continue;
+    if (!p.feature().empty() && !has_feature(s, p.feature())) continue;
+    quantities.push_back({p.swift().snapshot_dataset, field.datasets, p.units(), p.swift().description});
   }
-  if (gravity) q.push_back({"Potentials", {"phi"}, {0, 2, -2}, "Gravitational potentials G Phi of the particles"});
-  if (walls) q.erase(q.begin() + 1);  // fixed in place: no velocities
-  return q;
+  return quantities;
 }
 
 /// The CGS value of one code unit of a quantity (SWIFT's units_general_cgs_conversion_factor).
@@ -123,20 +113,22 @@ inline flecsi_lite::io::snapshot_attributes unit_attributes(const unit_system& u
 
 /// The units in the root attributes of the H5Part output: SWIFT's names of the base units
 /// ("Unit mass in cgs (U_M)", "Unit length in cgs (U_L)", "Unit time in cgs (U_t)") and, for each
-/// dataset of the output, "<dataset> conversion factor to CGS" (one code unit in CGS) and
-/// "<dataset> CGS units" (cgs_expression, e.g. "U_M U_L^-3  [ g cm^-3 ]"). Walls share the fluid's.
+/// H5Part output dataset of a snapshot quantity, "<dataset> conversion factor to CGS" (one code
+/// unit in CGS) and "<dataset> CGS units" (cgs_expression, e.g. "U_M U_L^-3  [ g cm^-3 ]").
+/// Walls share the fluid's.
 template<int D>
 std::vector<std::pair<std::string, flecsi_lite::io::attribute_value>> h5part_unit_attributes(const unit_system& u,
-                                                                                             bool gravity) {
+                                                                                             const simulation<D>& s) {
   std::vector<std::pair<std::string, flecsi_lite::io::attribute_value>> out = {
     {"Unit mass in cgs (U_M)", u.mass_in_cgs},
     {"Unit length in cgs (U_L)", u.length_in_cgs},
     {"Unit time in cgs (U_t)", u.time_in_cgs}};
-  for (const auto& q : snapshot_quantities<D>(false, gravity)) {
-    if (q.name == "Accelerations") continue;  // ax ay az are checkpoint data, not output
-    for (const auto& source : q.sources) {
-      out.push_back({source + " conversion factor to CGS", cgs_factor(u, q.units)});
-      out.push_back({source + " CGS units", cgs_expression(q.units)});
+  for (const auto& field : files_fields(s)) {
+    const auto& p = field.persistence;
+    if (p.swift().snapshot_dataset.empty() || !p.has(flecsi_lite::data::role::output)) continue;
+    for (const auto& dataset : field.datasets) {
+      out.push_back({dataset + " conversion factor to CGS", cgs_factor(u, p.units())});
+      out.push_back({dataset + " CGS units", cgs_expression(p.units())});
     }
   }
   return out;

@@ -227,7 +227,7 @@ class snapshot_series {
   void write_type(flecsi_lite::io::snapshot_writer& out, simulation<D>& s, int type,
                   const std::vector<std::size_t>& rows, bool walls) {
     const std::string group = part_type_group(type);
-    for (const auto& q : snapshot_quantities<D>(walls, s.physics.gravity.enabled)) {
+    for (const auto& q : snapshot_quantities<D>(s, walls)) {
       const auto values = detail::gather_rows(s, q.sources, rows);
       const int columns = static_cast<int>(q.sources.size());
       std::visit([&](const auto& v) { out.write(group, q.name, v, columns, unit_attributes(run_.units, q)); }, values);

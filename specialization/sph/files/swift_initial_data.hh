@@ -26,7 +26,9 @@
 #include "specialization/sph/files/particle_input.hh"
 #include "specialization/sph/files/snapshot_settings.hh"
 #include "specialization/sph/files/swift_header_checks.hh"
+#include "specialization/sph/model/fields.hh"
 
+#include "flecsi_lite/data.hh"
 #include "flecsi_lite/io.hh"
 
 #include <cmath>
@@ -40,22 +42,19 @@
 
 namespace flecsph::sph {
 
-/// Our field datasets (fields.hh, the tree's x y z id m h) in SWIFT's initial-conditions names,
-/// or (snapshot_names) in the plural names of SWIFT's snapshots, which ours share (SWIFT's
-/// src/hydro/*/hydro_io.h: SmoothingLengths, InternalEnergies, Densities).
+/// Our field datasets in SWIFT's initial-conditions names, as the fields' definitions give them
+/// (model/fields.hh and the tree's own: in_swift_initial_conditions), or (snapshot_names) the
+/// same fields under their snapshot names, the plural names of SWIFT's snapshots, which ours
+/// share (SmoothingLengths, InternalEnergies, Densities); a vector's component k (k < D) is
+/// column k of the N x 3 dataset.
 template<int D>
 std::map<std::string, flecsi_lite::io::gadget_reader::column> swift_initial_columns(bool snapshot_names = false) {
-  std::map<std::string, flecsi_lite::io::gadget_reader::column> columns{
-    {"m", {"Masses"}},
-    {"h", {snapshot_names ? "SmoothingLengths" : "SmoothingLength"}},
-    {"u", {snapshot_names ? "InternalEnergies" : "InternalEnergy"}},
-    {"id", {"ParticleIDs"}},
-    {"rho", {snapshot_names ? "Densities" : "Density"}}};
-  const char* axes[] = {"x", "y", "z"};
-  const char* velocities[] = {"vx", "vy", "vz"};
-  for (int k = 0; k < D; ++k) {
-    columns[axes[k]] = {"Coordinates", k};
-    columns[velocities[k]] = {"Velocities", k};
+  std::map<std::string, flecsi_lite::io::gadget_reader::column> columns;
+  for (const auto& field : flecsi_lite::data::registered_fields<particle_tree<D>>()) {
+    const auto& naming = field.persistence.swift();
+    if (naming.initial_conditions_dataset.empty()) continue;
+    const std::string& name = snapshot_names ? naming.snapshot_dataset : naming.initial_conditions_dataset;
+    for (int k = 0; k < field.components; ++k) columns[field.datasets[k]] = {name, k};
   }
   return columns;
 }

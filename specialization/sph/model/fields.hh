@@ -28,12 +28,14 @@ namespace persist = flecsi_lite::persist;
 enum class particle_kind : std::int32_t { fluid = 0, wall = 1 };
 
 /// The fields of dimension D, declared once (fields are per topology type, ntree<D>), each with
-/// its persistence (flecsi_lite/data/persistence.hh): what the output, the checkpoints and the
-/// initial-data reader hold is exactly what these definitions say, and a field that exists in
-/// files only with a feature of the run says so (`only_with`: "gravity", "individual_time_steps",
-/// "viscosity_switch", "balsara_switch", "velocity_gradients"; such a field also takes memory only in
-/// the runs that have its feature);
-/// run_features() in files/particle_output.hh says which a run has).
+/// its persistence (flecsi_lite/data/persistence.hh): what the output, the checkpoints, the
+/// snapshots and the initial-data readers hold is exactly what these definitions say, with the
+/// field's units and SWIFT names (`units`, `in_snapshots`, `in_swift_initial_conditions`,
+/// `moving_particles_only`: walls have no such snapshot dataset; files/snapshot_layout.hh), and
+/// a field that exists in files only with a feature of the run says so (`only_with`: "gravity",
+/// "individual_time_steps", "viscosity_switch", "balsara_switch", "velocity_gradients"; such a
+/// field also takes memory only in the runs that have its feature; has_feature() in
+/// files/particle_output.hh says which a run has).
 ///
 /// Registration. Each definition registers its field with ntree<D> (data/field_registry.hh; its
 /// index there is its id) when the static member is initialized. A static member of a class
@@ -53,6 +55,10 @@ struct fields {
   template<class T>
   using definition = typename particle_tree<D>::template definition<T>;
 
+  /// The powers of length in the units of a density and a pressure: per D-dimensional volume.
+  static constexpr float density_length_power = -static_cast<float>(D);
+  static constexpr float pressure_length_power = 2 - static_cast<float>(D);
+
   // The topology's own fields (x y z, id, m, h), named here so that tasks read as physics.
   static const auto& position() { return particle_tree<D>::position; }
   static const auto& id() { return particle_tree<D>::id; }
@@ -64,22 +70,54 @@ struct fields {
     "kind",
     persist::output().restart().initial_optional(persist::one_of({0, 1}, "0 for fluid or 1 for wall particles"))};
   /// v (predicted during a step)
-  static inline const definition<vector<D>> velocity{
-    "velocity",
-    persist::as("vx", "vy", "vz").padded().output().restart().initial_optional(persist::must_be_finite("velocities"))};
+  static inline const definition<vector<D>> velocity{"velocity",
+                                                     persist::as("vx", "vy", "vz")
+                                                       .padded()
+                                                       .output()
+                                                       .restart()
+                                                       .initial_optional(persist::must_be_finite("velocities"))
+                                                       .units(0, 1, -1)
+                                                       .in_snapshots("Velocities", "Velocities of the particles")
+                                                       .in_swift_initial_conditions("Velocities")
+                                                       .moving_particles_only()};
   /// eq. (1.3); read as an initial guess only
   static inline const definition<double> density{
-    "rho", persist::output().restart().initial_optional(persist::at_least(0, "densities"))};
+    "rho", persist::output()
+             .restart()
+             .initial_optional(persist::at_least(0, "densities"))
+             .units(1, density_length_power, 0)
+             .in_snapshots("Densities", "Densities of the particles (mass per D-dimensional volume)")
+             .in_swift_initial_conditions("Density")};
   /// specific
   static inline const definition<double> internal_energy{
-    "u", persist::output().restart().initial_required(persist::at_least(0, "internal energies"))};
+    "u", persist::output()
+           .restart()
+           .initial_required(persist::at_least(0, "internal energies"))
+           .units(0, 2, -2)
+           .in_snapshots("InternalEnergies", "Specific internal energies of the particles")
+           .in_swift_initial_conditions("InternalEnergy")};
   // Output and restart.
-  static inline const definition<double> pressure{"P", persist::output().restart()};
-  static inline const definition<double> sound_speed{"cs", persist::output().restart()};
-  static inline const definition<double> internal_energy_rate{"du_dt", persist::output().restart()};  ///< eq. (1.8)
+  static inline const definition<double> pressure{"P", persist::output()
+                                                         .restart()
+                                                         .units(1, pressure_length_power, -2)
+                                                         .in_snapshots("Pressures", "Pressures of the particles")};
+  static inline const definition<double> sound_speed{
+    "cs", persist::output().restart().units(0, 1, -1).in_snapshots("SoundSpeeds", "Sound speeds of the particles")};
+  /// eq. (1.8)
+  static inline const definition<double> internal_energy_rate{
+    "du_dt", persist::output()
+               .restart()
+               .units(0, 2, -3)
+               .in_snapshots("InternalEnergyRates", "Time derivatives of the specific internal energies")
+               .moving_particles_only()};
   // Restart only: what the next step reads of the last force evaluation.
   /// eq. (1.9)
-  static inline const definition<vector<D>> acceleration{"acceleration", persist::as("ax", "ay", "az").restart()};
+  static inline const definition<vector<D>> acceleration{
+    "acceleration", persist::as("ax", "ay", "az")
+                      .restart()
+                      .units(0, 1, -2)
+                      .in_snapshots("Accelerations", "Accelerations of the particles (last force evaluation)")
+                      .moving_particles_only()};
   static inline const definition<double> omega{"omega", persist::restart()};  ///< grad-h factor (1 for fixed h)
   static inline const definition<double> pressure_term{"P_over_omega_rho2", persist::restart()};  ///< P / (Omega rho^2)
   // The velocity gradients (with the Balsara switch, and div v with individual time steps) and
@@ -96,8 +134,9 @@ struct fields {
   // no memory is taken): the potential G Phi (output and restart, for the
   // potential energy), zeta / Omega of the grad-h gravity term (Price & Monaghan 2007), and the
   // tree's acceleration G a (in memory only: the force pass adds it).
-  static inline const definition<double> gravitational_potential{"phi",
-                                                                 persist::output().restart().only_with("gravity")};
+  static inline const definition<double> gravitational_potential{
+    "phi", persist::output().restart().only_with("gravity").units(0, 2, -2).in_snapshots(
+             "Potentials", "Gravitational potentials G Phi of the particles")};
   static inline const definition<double> zeta_over_omega{"zeta_over_omega", persist::restart().only_with("gravity")};
   static inline const definition<vector<D>> gravity_acceleration{"gravity_acceleration"};
   // The half-step values of the leapfrog: recomputed in every step with global time steps; with

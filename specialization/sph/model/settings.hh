@@ -1,7 +1,7 @@
 // The physics and run-control settings of the SPH specialization (kernel, equation of state,
 // dissipation, smoothing length, time step; end time and reports) and the parameter-file keys
-// that set them, each declared once next to the member it fills, shared by every app; and the
-// range checks of the quantities a problem derives from its keys.
+// that set them, each declared once next to the member it fills, shared by every app (the range
+// checks of the quantities a problem derives from its keys are the runtime's: derived_values.hh).
 #pragma once
 
 #include "specialization/physics/eos.hh"
@@ -133,19 +133,5 @@ struct run_settings {
 /// The run-control keys end_time, max_steps, progress_every and diagnostics_every, with the
 /// defaults each problem chooses in `defaults`.
 flecsi_lite::runtime::parameter_block<run_settings> run_parameters(const run_settings& defaults = {});
-
-/// Checks of the quantities a problem derives from its keys (lengths, masses, energies, counts),
-/// made before they are used, so that absurd keys are a parameter_error naming them rather than an
-/// overflow. The message is "<program>: <what> = <value> (from <keys>) must be ...".
-inline constexpr double most_particles = 1099511627776.0;  ///< 2^40: more is not a sensible run
-/// Lengths (coordinates, spacings, h) within [1e-50, 1e50]: the kernels' h^(D+1), the squared
-/// distances and the tree's keys then stay far from overflow and underflow.
-inline constexpr double smallest_length = 1e-50, largest_length = 1e50;
-/// `value` when it is in [smallest_length, largest_length].
-double checked_length(const std::string& program, const std::string& what, double value, const std::string& keys);
-/// `value` when it is finite and > 0.
-double checked_positive(const std::string& program, const std::string& what, double value, const std::string& keys);
-/// llround(value) when value is in [0, most_particles] (NaN is not): counts of particles, layers.
-std::int64_t checked_count(const std::string& program, const std::string& what, double value, const std::string& keys);
 
 }  // namespace flecsph::sph

@@ -10,6 +10,7 @@
 #include "specialization/sph/step/density.hh"
 #include "specialization/sph/step/equation_of_state.hh"
 
+#include "specialization/physics/time_step.hh"
 #include "specialization/physics/viscosity.hh"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
-// Artificial viscosity Pi_ab (seed 1.10-1.11), Balsara switch, signal velocity and artificial
-// conductivity: zero where they must be, pair symmetry, and values computed by hand.
+// Artificial viscosity Pi_ab (seed 1.10-1.11), Balsara switch, signal velocity (and the Courant
+// step it gives, time_step.hh) and artificial conductivity: zero where they must be, pair symmetry, and values computed by hand.
 #include "specialization/physics/viscosity.hh"
+#include "specialization/physics/time_step.hh"
 
 #include <catch2/catch.hpp>
 

@@ -30,15 +30,15 @@ void compute_leaf_moments(Node& node, const point<D>* x, const double* m, const 
     for (int k = 0; k < D; ++k) weighted[k] += m[b] * x[b][k];
   }
   if (node.mass > 0) {
-    for (int k = 0; k < D; ++k) node.center[k] = weighted[k] / node.mass;
+    for (int k = 0; k < D; ++k) node.centre[k] = weighted[k] / node.mass;
   } else {
-    node.center = node.size() > 0 ? node.bounds.center() : point<D>{};
+    node.centre = node.size() > 0 ? node.bounds.centre() : point<D>{};
   }
   if (q == nullptr) return;
   // The moments about the centre of mass: offsets of the particles, viewed as Eigen vectors.
   q->setZero();
-  const auto center = as_column_vector<D>(node.center);
-  for (std::uint32_t b = node.begin; b < node.end; ++b) add_point_mass<D>(*q, m[b], as_column_vector<D>(x[b]) - center);
+  const auto centre = as_column_vector<D>(node.centre);
+  for (std::uint32_t b = node.begin; b < node.end; ++b) add_point_mass<D>(*q, m[b], as_column_vector<D>(x[b]) - centre);
 }
 
 /// An inner node from its children nodes[node.first_child ..], in that order; `quadrupoles`
@@ -55,19 +55,19 @@ void compute_parent_moments(Node& node, const Node* nodes, const quadrupole<D>* 
     node.bounds.extend(child_node.bounds);
     node.h_max = std::max(node.h_max, child_node.h_max);
     node.mass += child_node.mass;
-    for (int k = 0; k < D; ++k) weighted[k] += child_node.mass * child_node.center[k];
+    for (int k = 0; k < D; ++k) weighted[k] += child_node.mass * child_node.centre[k];
   }
   if (node.mass > 0) {
-    for (int k = 0; k < D; ++k) node.center[k] = weighted[k] / node.mass;
+    for (int k = 0; k < D; ++k) node.centre[k] = weighted[k] / node.mass;
   } else {
-    node.center = node.size() > 0 ? node.bounds.center() : point<D>{};
+    node.centre = node.size() > 0 ? node.bounds.centre() : point<D>{};
   }
   if (q == nullptr) return;
   // Parallel-axis shift of the children's moments to this node's centre of mass.
   q->setZero();
-  const auto center = as_column_vector<D>(node.center);
+  const auto centre = as_column_vector<D>(node.centre);
   for (std::uint32_t c = node.first_child; c < last; ++c)
-    add_shifted<D>(*q, quadrupoles[c], nodes[c].mass, as_column_vector<D>(nodes[c].center) - center);
+    add_shifted<D>(*q, quadrupoles[c], nodes[c].mass, as_column_vector<D>(nodes[c].centre) - centre);
 }
 
 }  // namespace flecsi_lite::topology::ntree::detail

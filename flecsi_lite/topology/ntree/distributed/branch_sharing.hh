@@ -24,7 +24,7 @@ namespace flecsi_lite::topology::ntree {
 
 /// A top branch: `bounds`, the tight box of a node's particles, and three outer bounds of the
 /// union of their balls of radius r_p = support * factor * h_p: the bounding box `reach`, the
-/// sphere (`center`, `radius`) and the box `bounds` widened by support * factor * h_max.
+/// sphere (`centre`, `radius`) and the box `bounds` widened by support * factor * h_max.
 ///
 /// Why these suffice: particles a (of the branch) and i interact when
 /// |x_a - x_i| < support * max(h_a, h_i). If h_i is the larger, i is closer than support * h_i
@@ -36,7 +36,7 @@ template<int D>
 struct branch {
   box<D> bounds = box<D>::empty();
   box<D> reach = box<D>::empty();
-  point<D> center{};
+  point<D> centre{};
   double radius = 0;
   double h_max = 0;
 };
@@ -127,9 +127,9 @@ std::vector<branch<D>> top_branches(const hashed_tree<D>& tree, std::size_t coun
     b.bounds = node.bounds;
     b.reach = reach[index];
     b.h_max = node.h_max;
-    b.center = node.bounds.center();
+    b.centre = node.bounds.centre();
     for (std::uint32_t i = node.begin; i < node.end; ++i)
-      b.radius = std::max(b.radius, std::sqrt(distance_squared<D>(x[i], b.center)) + scale * h[i]);
+      b.radius = std::max(b.radius, std::sqrt(distance_squared<D>(x[i], b.centre)) + scale * h[i]);
     b.radius *= 1 + 1e-12;
     result.push_back(b);
   }
@@ -178,7 +178,7 @@ void for_each_within_branch(const hashed_tree<D>& tree, const domain<D>& space, 
   // Inside every outer bound of the union of b's balls (x a point or the box of a node).
   const auto in_balls = [&](const auto& where) {
     return distance_squared<D>(b.bounds, where) < branch_reach * branch_reach &&
-           distance_squared<D>(where, b.center) < b.radius * b.radius;
+           distance_squared<D>(where, b.centre) < b.radius * b.radius;
   };
   walk_entry stack[walk_stack_size<D>];
   int top = 0;

@@ -33,7 +33,7 @@ template<int D>
 inline bool barnes_hut_accepts(const tree_node<D>& node, const box<D>& targets, double theta) {
   if (targets.intersects(node.bounds)) return false;
   const double size = node.bounds.max_extent();
-  return size * size < theta * theta * distance_squared<D>(targets, node.center);
+  return size * size < theta * theta * distance_squared<D>(targets, node.centre);
 }
 
 /// Fills `out` with the interaction list of the targets in box `targets` (a point is a box

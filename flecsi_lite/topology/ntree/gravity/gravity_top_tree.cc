@@ -129,7 +129,7 @@ wire_node<D> to_wire(const tree_node<D>& node, const quadrupole<D>* q, int owner
   wire_node<D> record;
   record.key = node.key;
   record.bounds = node.bounds;
-  record.center = node.center;
+  record.centre = node.centre;
   record.h_max = node.h_max;
   record.mass = node.mass;
   if (q) std::memcpy(record.q.data(), q->data(), sizeof(record.q));
@@ -151,7 +151,7 @@ tree_node<D> from_wire(const wire_node<D>& record, quadrupole<D>* q) {
   node.bounds = record.bounds;
   node.h_max = record.h_max;
   node.mass = record.mass;
-  node.center = record.center;
+  node.centre = record.centre;
   if (q) std::memcpy(q->data(), record.q.data(), sizeof(record.q));
   return node;
 }

@@ -43,7 +43,7 @@ struct tree_node {
   box<D> bounds = box<D>::empty();
   double h_max = 0;  ///< largest smoothing length of the particles
   double mass = 0;
-  point<D> center{};  ///< centre of mass (centre of the bounds when the mass is zero)
+  point<D> centre{};  ///< centre of mass (centre of the bounds when the mass is zero)
 
   bool is_leaf() const { return child_count == 0; }
   std::uint32_t size() const { return end - begin; }

@@ -56,11 +56,11 @@ inline void add_shifted(quadrupole<D>& q, const quadrupole<D>& child, double m_c
   add_point_mass<D>(q, m_child, d);
 }
 
-/// Potential at x of mass `m` at `center` with quadrupole `q` about it:
-/// phi = -m/r - (r.Q.r) / (2 r^5), r = x - center. Precondition: x != center.
+/// Potential at x of mass `m` at `centre` with quadrupole `q` about it:
+/// phi = -m/r - (r.Q.r) / (2 r^5), r = x - centre. Precondition: x != centre.
 template<int D>
-inline double multipole_potential(double m, const point<D>& center, const quadrupole<D>& q, const point<D>& x) {
-  const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(center);
+inline double multipole_potential(double m, const point<D>& centre, const quadrupole<D>& q, const point<D>& x) {
+  const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(centre);
   const double rqr = r.dot(q * r);
   const double inverse_r = 1 / r.norm();
   const double inverse_r2 = inverse_r * inverse_r;
@@ -68,10 +68,10 @@ inline double multipole_potential(double m, const point<D>& center, const quadru
 }
 
 /// Acceleration at x (minus the gradient of multipole_potential):
-/// a = -m r/r^3 + Q r/r^5 - (5/2)(r.Q.r) r/r^7. Precondition: x != center.
+/// a = -m r/r^3 + Q r/r^5 - (5/2)(r.Q.r) r/r^7. Precondition: x != centre.
 template<int D>
-inline point<D> multipole_acceleration(double m, const point<D>& center, const quadrupole<D>& q, const point<D>& x) {
-  const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(center);
+inline point<D> multipole_acceleration(double m, const point<D>& centre, const quadrupole<D>& q, const point<D>& x) {
+  const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(centre);
   const column_vector<D> qr = q * r;
   const double rqr = r.dot(qr);
   const double inverse_r = 1 / r.norm();
@@ -85,11 +85,11 @@ inline point<D> multipole_acceleration(double m, const point<D>& center, const q
 
 /// Both at once (the tree walk's inner loop): writes multipole_acceleration to `acceleration`
 /// and returns multipole_potential, bit for bit, sharing r, 1/r and Q r. Precondition:
-/// x != center.
+/// x != centre.
 template<int D>
-inline double multipole_field(double m, const point<D>& center, const quadrupole<D>& q, const point<D>& x,
+inline double multipole_field(double m, const point<D>& centre, const quadrupole<D>& q, const point<D>& x,
                               point<D>& acceleration) {
-  const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(center);
+  const column_vector<D> r = as_column_vector<D>(x) - as_column_vector<D>(centre);
   const column_vector<D> qr = q * r;
   const double rqr = r.dot(qr);
   const double inverse_r = 1 / r.norm();

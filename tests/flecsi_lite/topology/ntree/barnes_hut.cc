@@ -47,7 +47,7 @@ vector3 tree_acceleration(const fixture& f, std::size_t a, const nt::interaction
   for (const std::uint32_t i : list.nodes) {
     const auto& node = f.tree.node(i);
     acceleration += nt::as_column_vector<3>(
-      nt::multipole_acceleration<3>(node.mass, node.center, quadrupole ? f.tree.node_quadrupole(i) : none, f.set.x[a]));
+      nt::multipole_acceleration<3>(node.mass, node.centre, quadrupole ? f.tree.node_quadrupole(i) : none, f.set.x[a]));
   }
   return acceleration;
 }
@@ -106,7 +106,7 @@ TEST_CASE("accepted nodes satisfy the criterion and partition the sources", "[nt
       for (const std::uint32_t i : list.nodes) {
         const auto& node = f.tree.node(i);
         REQUIRE_FALSE(node.bounds.contains(f.set.x[a]));
-        const double distance = std::sqrt(nt::distance_squared<3>(f.set.x[a], node.center));
+        const double distance = std::sqrt(nt::distance_squared<3>(f.set.x[a], node.centre));
         REQUIRE(node.bounds.max_extent() < theta * distance);
       }
     }
@@ -118,7 +118,7 @@ TEST_CASE("accepted nodes satisfy the criterion and partition the sources", "[nt
       const auto& node = f.tree.node(i);
       REQUIRE_FALSE(node.bounds.intersects(group.bounds));
       for (std::uint32_t a = group.begin; a < group.end; ++a) {
-        const double distance = std::sqrt(nt::distance_squared<3>(f.set.x[a], node.center));
+        const double distance = std::sqrt(nt::distance_squared<3>(f.set.x[a], node.centre));
         REQUIRE(node.bounds.max_extent() < theta * distance);
       }
     }
@@ -171,27 +171,27 @@ TEST_CASE("multipole acceleration is minus the gradient of its potential", "[ntr
     mass += m;
     weighted += m * x;
   }
-  const vector3 center_of_mass = weighted / mass;
+  const vector3 centre_of_mass = weighted / mass;
   nt::quadrupole<3> q = nt::quadrupole<3>::Zero();
-  for (const auto& [m, x] : masses) nt::add_point_mass<3>(q, m, x - center_of_mass);
+  for (const auto& [m, x] : masses) nt::add_point_mass<3>(q, m, x - centre_of_mass);
   REQUIRE(q == q.transpose());                                      // exactly symmetric
   REQUIRE(std::abs(q.trace()) <= 1e-14 * q.cwiseAbs().maxCoeff());  // traceless in 3D
   REQUIRE(q.cwiseAbs().maxCoeff() > 0.01 * mass * 0.3 * 0.3);       // and not zero
 
-  nt::point<3> center;
-  nt::as_column_vector<3>(center) = center_of_mass;
+  nt::point<3> centre;
+  nt::as_column_vector<3>(centre) = centre_of_mass;
   const double step = 1e-5;
   for (int trial = 0; trial < 20; ++trial) {
     const vector3 direction = vector3(unit(random), unit(random), unit(random)).normalized();
     nt::point<3> x;
-    nt::as_column_vector<3>(x) = center_of_mass + (1.5 + trial * 0.25) * direction;
-    const auto acceleration = nt::multipole_acceleration<3>(mass, center, q, x);
+    nt::as_column_vector<3>(x) = centre_of_mass + (1.5 + trial * 0.25) * direction;
+    const auto acceleration = nt::multipole_acceleration<3>(mass, centre, q, x);
     for (int k = 0; k < 3; ++k) {
       nt::point<3> forward = x, backward = x;
       forward[k] += step;
       backward[k] -= step;
       const double gradient =
-        (nt::multipole_potential<3>(mass, center, q, forward) - nt::multipole_potential<3>(mass, center, q, backward)) /
+        (nt::multipole_potential<3>(mass, centre, q, forward) - nt::multipole_potential<3>(mass, centre, q, backward)) /
         (2 * step);
       // Central differences: error ~ step^2 |phi'''| plus rounding ~ 1e-16 |phi| / step.
       REQUIRE(std::abs(acceleration[k] + gradient) <= 1e-8 * nt::as_column_vector<3>(acceleration).norm());

@@ -292,7 +292,7 @@ TEST_CASE("interaction lists partition the sources and satisfy the criteria", "[
         const double reach = options.near_factor * std::max(node.h_max, group.h_max);
         REQUIRE(nt::distance_squared<3>(node.bounds, group.bounds) > reach * reach);
         for (std::uint32_t i = group.begin; i < group.end; ++i) {
-          const double d = std::sqrt(nt::distance_squared<3>(r.f.set.x[i], node.center));
+          const double d = std::sqrt(nt::distance_squared<3>(r.f.set.x[i], node.centre));
           REQUIRE(node.bounds.max_extent() < theta * d);
         }
       }
@@ -332,9 +332,9 @@ TEST_CASE("relative criterion: accepted nodes pass eq. 18 and the guard", "[ntre
         const auto& node = r.f.tree.node(index);
         covered += node.size();
         const double side = node.bounds.max_extent();
-        const auto centre = node.bounds.center();
+        const auto centre = node.bounds.centre();
         for (std::uint32_t i = group.begin; i < group.end; ++i) {
-          const double r2 = nt::distance_squared<3>(r.f.set.x[i], node.center);
+          const double r2 = nt::distance_squared<3>(r.f.set.x[i], node.centre);
           REQUIRE(node.mass * side * side <= alpha * magnitude[i] * r2 * r2);
           bool inside = true;  // GADGET-2's guard: |x - centre| < 0.6 side on every axis
           for (int k = 0; k < 3; ++k) inside = inside && std::abs(r.f.set.x[i][k] - centre[k]) < 0.6 * side;
@@ -382,11 +382,11 @@ TEST_CASE("multipole_field is multipole_potential and multipole_acceleration at 
   for (std::size_t index = 0; index < nodes.size(); index += 13) {
     const auto& node = nodes[index];
     const auto& q = r.f.tree.node_quadrupole(static_cast<std::uint32_t>(index));
-    const nt::point<3> x = {node.center[0] + 0.3, node.center[1] - 0.7, node.center[2] + 1.1};
+    const nt::point<3> x = {node.centre[0] + 0.3, node.centre[1] - 0.7, node.centre[2] + 1.1};
     nt::point<3> a;
-    const double phi = nt::multipole_field<3>(node.mass, node.center, q, x, a);
-    REQUIRE(phi == nt::multipole_potential<3>(node.mass, node.center, q, x));
-    REQUIRE(a == nt::multipole_acceleration<3>(node.mass, node.center, q, x));
+    const double phi = nt::multipole_field<3>(node.mass, node.centre, q, x, a);
+    REQUIRE(phi == nt::multipole_potential<3>(node.mass, node.centre, q, x));
+    REQUIRE(a == nt::multipole_acceleration<3>(node.mass, node.centre, q, x));
   }
 }
 

@@ -85,17 +85,17 @@ void check_moments(const nt::hashed_tree<D>& tree, const ntree_test::particle_se
     REQUIRE(compact.first_child == node.first_child);
     REQUIRE(compact.child_count == node.child_count);
     REQUIRE(node.mass == Approx(mass).epsilon(1e-13));
-    nt::point<D> center;
-    for (int k = 0; k < D; ++k) center[k] = weighted[k] / mass;
+    nt::point<D> centre;
+    for (int k = 0; k < D; ++k) centre[k] = weighted[k] / mass;
     const double scale = std::max(1.0, tree.root().bounds.max_extent());
-    for (int k = 0; k < D; ++k) REQUIRE(std::abs(node.center[k] - center[k]) <= 1e-13 * scale);
+    for (int k = 0; k < D; ++k) REQUIRE(std::abs(node.centre[k] - centre[k]) <= 1e-13 * scale);
 
     if (!tree.has_quadrupoles()) continue;
     // The direct sum about the node's centre of mass, and the moment of inertia sum m |d|^2.
     nt::quadrupole<D> q = nt::quadrupole<D>::Zero();
     double inertia = 0;
     for (std::uint32_t b = node.begin; b < node.end; ++b) {
-      const nt::column_vector<D> d = nt::as_column_vector<D>(set.x[b]) - nt::as_column_vector<D>(center);
+      const nt::column_vector<D> d = nt::as_column_vector<D>(set.x[b]) - nt::as_column_vector<D>(centre);
       nt::add_point_mass<D>(q, set.m[b], d);
       inertia += set.m[b] * d.squaredNorm();
     }
@@ -163,7 +163,7 @@ TEST_CASE("tiny trees: no particle, one particle", "[ntree][tree]") {
   ntree_test::sort_by_key(set, nt::curve::morton);
   tree.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), 1);
   REQUIRE(tree.nodes().size() == 1);
-  REQUIRE(tree.root().center == set.x[0]);
+  REQUIRE(tree.root().centre == set.x[0]);
   REQUIRE(tree.root().mass == set.m[0]);
 }
 

@@ -24,7 +24,7 @@ template<int D>
 struct gravity_list {
   std::vector<std::uint32_t> nodes;
   std::vector<double> node_mass;
-  std::vector<point<D>> node_center;
+  std::vector<point<D>> node_centre;
   std::vector<quadrupole<D>> node_quadrupole;
   std::vector<point<D>> x;
   std::vector<double> m;
@@ -34,7 +34,7 @@ struct gravity_list {
   void clear() {
     nodes.clear();
     node_mass.clear();
-    node_center.clear();
+    node_centre.clear();
     node_quadrupole.clear();
     x.clear();
     m.clear();
@@ -62,7 +62,7 @@ void build_gravity_list(const Sources& sources, const Group& group, const Option
     if (gravity_accepts<D>(node, group, options)) {
       list.nodes.push_back(index);
       list.node_mass.push_back(node.mass);
-      list.node_center.push_back(node.center);
+      list.node_centre.push_back(node.centre);
       list.node_quadrupole.push_back(quadrupoles ? quadrupoles[index] : quadrupole<D>::Zero());
     } else if (node.is_leaf()) {
       for (std::uint32_t b = node.begin; b < node.end; ++b) {
@@ -129,7 +129,7 @@ inline void sum_gravity_list(const gravity_list<D>& list, double near_factor, co
   }
   for (std::size_t n = 0; n < list.nodes.size(); ++n) {
     const double m = list.node_mass[n];
-    const point<D>& c = list.node_center[n];
+    const point<D>& c = list.node_centre[n];
     double q[D][D];
     for (int i = 0; i < D; ++i)
       for (int j = 0; j < D; ++j) q[i][j] = list.node_quadrupole[n](i, j);

@@ -27,7 +27,7 @@ inline bool within_softening(const tree_node<D>& node, const box<D>& group, doub
 /// the target close to much of its mass, which the relative estimate does not see.
 template<int D>
 inline bool inside_widened_cube(const tree_node<D>& node, const box<D>& group) {
-  const point<D> centre = node.bounds.center();
+  const point<D> centre = node.bounds.centre();
   const double half = 0.6 * node.bounds.max_extent();
   for (int k = 0; k < D; ++k)
     if (group.hi[k] <= centre[k] - half || group.lo[k] >= centre[k] + half) return false;
@@ -41,7 +41,7 @@ template<int D>
 inline bool relative_accepts(const tree_node<D>& node, const box<D>& group, double acceleration_min, double alpha) {
   if (group.intersects(node.bounds) || inside_widened_cube<D>(node, group)) return false;
   const double side = node.bounds.max_extent();
-  const double r2 = distance_squared<D>(group, node.center);
+  const double r2 = distance_squared<D>(group, node.centre);
   return r2 > 0 && node.mass * side * side <= alpha * acceleration_min * r2 * r2;
 }
 
@@ -53,9 +53,9 @@ inline bool relative_accepts(const tree_node<D>& node, const box<D>& group, doub
 template<int D>
 inline bool geometric_accepts(const tree_node<D>& node, const box<D>& group, double theta) {
   if (group.intersects(node.bounds)) return false;
-  const double offset = std::sqrt(distance_squared<D>(node.bounds.center(), node.center));
+  const double offset = std::sqrt(distance_squared<D>(node.bounds.centre(), node.centre));
   const double reach = node.bounds.max_extent() + theta * offset;
-  return reach * reach < theta * theta * distance_squared<D>(group, node.center);
+  return reach * reach < theta * theta * distance_squared<D>(group, node.centre);
 }
 
 /// The whole test for one node and one group; Group and Options are target_group<D> and

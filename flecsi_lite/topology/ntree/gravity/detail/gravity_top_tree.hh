@@ -57,7 +57,7 @@ template<int D>
 struct wire_node {
   key_type key = root_key;
   box<D> bounds;
-  point<D> center;
+  point<D> centre;
   double h_max = 0, mass = 0;
   std::array<double, D * D> q{};
   std::uint32_t size = 0;

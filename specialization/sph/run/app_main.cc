@@ -1,5 +1,9 @@
-// main() of the SPH apps (app.hh): the framework's app frame with the SPH keys.
-#include "specialization/sph/run/app.hh"
+// main() of the SPH apps (app_main.hh): the framework's app frame with the SPH keys.
+#include "specialization/sph/run/app_main.hh"
+
+#include "specialization/sph/files/snapshot_settings.hh"
+#include "specialization/sph/model/settings.hh"
+#include "specialization/sph/run/statistics.hh"
 
 namespace flecsph::sph {
 
