@@ -26,9 +26,6 @@ int run(const app::run_context& context) {
   sph::require_equation_of_state(s.physics, flecsph::physics::eos_type::ideal_gas, s.program,
                                  "the pressure equilibrium");
   kelvin_helmholtz::check_problem(s.problem, s.physics);
-  s.description = {
-    {"rho1", s.problem.rho1}, {"rho2", s.problem.rho2},           {"u1", s.problem.u1},
-    {"u2", s.problem.u2},     {"smoothing", s.problem.smoothing}, {"perturbation", s.problem.perturbation}};
   auto m = sph::make_app_control_model<kelvin_helmholtz_run>(
     {[](kelvin_helmholtz_run& state) { kelvin_helmholtz::set_periodic_box(state, state.problem); },
      [](kelvin_helmholtz_run& state) { kelvin_helmholtz::create_particles(state, state.problem); }});

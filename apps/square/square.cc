@@ -27,10 +27,7 @@ int run(const app::run_context& context) {
   square::check_problem(s.problem, s.physics);
   const std::int64_t n = s.problem.per_side;
   // The first id of the square's particles (the checker tells the phases apart by it).
-  s.description = {{"square_first_id", std::int64_t{n * n - (n / 2) * (n / 2)}},
-                   {"square_density", s.problem.square_density},
-                   {"ambient_density", s.problem.ambient_density},
-                   {"pressure", s.problem.pressure}};
+  s.description = {{"square_first_id", std::int64_t{n * n - (n / 2) * (n / 2)}}};
   auto m =
     sph::make_app_control_model<square_run>({[](square_run& state) { square::set_periodic_box(state, state.problem); },
                                              [](square_run& state) { square::create_lattices(state, state.problem); }});

@@ -29,24 +29,27 @@ void check_problem(const problem& problem, const sph::physics_settings& physics)
     throw flecsi_lite::runtime::parameter_error(
       "square: particles_per_side = " + std::to_string(problem.per_side) +
       " must be a multiple of 4 (the square's edges at 1/4 and 3/4 then fall between lattice sites)");
-  const double inner =
-    sph::checked_count("square", "square lattice particles per side",
-                       0.5 * double(problem.per_side) * std::sqrt(problem.square_density / problem.ambient_density),
-                       "particles_per_side, square_density, ambient_density");
+  const double inner = flecsi_lite::runtime::checked_count(
+    "square", "square lattice particles per side",
+    0.5 * double(problem.per_side) * std::sqrt(problem.square_density / problem.ambient_density),
+    "particles_per_side, square_density, ambient_density");
   const double exact = 0.5 * double(problem.per_side) * std::sqrt(problem.square_density / problem.ambient_density);
   if (inner < 1 || std::fabs(inner - exact) > 1e-9 * exact)
     throw flecsi_lite::runtime::parameter_error(
       "square: equal masses need a whole number of square lattice particles per side, "
       "particles_per_side sqrt(square_density / ambient_density) / 2 = " +
       std::to_string(exact));
-  sph::checked_count("square", "particles", double(problem.per_side) * double(problem.per_side) + inner * inner,
-                     "particles_per_side, square_density, ambient_density");
+  flecsi_lite::runtime::checked_count("square", "particles",
+                                      double(problem.per_side) * double(problem.per_side) + inner * inner,
+                                      "particles_per_side, square_density, ambient_density");
   const double spacing = 1.0 / double(problem.per_side);
-  sph::checked_length("square", "smoothing length", physics.eta * spacing * 0.5 / inner * double(problem.per_side),
-                      "eta, particles_per_side, square_density");
+  flecsi_lite::runtime::checked_length("square", "smoothing length",
+                                       physics.eta * spacing * 0.5 / inner * double(problem.per_side),
+                                       "eta, particles_per_side, square_density");
   for (const double rho : {problem.square_density, problem.ambient_density})
-    sph::checked_positive("square", "internal energy", physics.eos.ideal.internal_energy(rho, problem.pressure),
-                          "pressure, square_density, ambient_density, gamma");
+    flecsi_lite::runtime::checked_positive("square", "internal energy",
+                                           physics.eos.ideal.internal_energy(rho, problem.pressure),
+                                           "pressure, square_density, ambient_density, gamma");
 }
 
 std::vector<site> lattice_sites(const problem& problem) {
