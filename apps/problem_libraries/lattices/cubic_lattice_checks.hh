@@ -3,6 +3,7 @@
 // (exit status 2) naming the keys it comes from (flecsi_lite/runtime/derived_values.hh).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 namespace lattices {
@@ -10,7 +11,7 @@ namespace lattices {
 /// A box of side `side` filled by `per_side`^dimension particles (keys box_side,
 /// particles_per_side) of density `rho0` (key rho0), smoothing length eta times the spacing.
 struct cubic_lattice {
-  int per_side = 0;
+  std::int64_t per_side = 0;
   double side = 0;
   double rho0 = 0;
 };

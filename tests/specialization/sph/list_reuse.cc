@@ -27,7 +27,7 @@ using f = sph::fields<D>;
 /// within a few steps; in an open box (`periodic` false), where no particle crosses a periodic
 /// boundary (which makes the lists searched again: see the last test cases).
 struct reuse_run : sph::simulation<D> {
-  reuse_run(double list_skin, bool periodic) : periodic(periodic) {
+  reuse_run(double list_skin, bool is_periodic) : periodic(is_periodic) {
     physics.list_skin = list_skin;
     physics.conductivity = 0;
     run.end_time = 1.0;
