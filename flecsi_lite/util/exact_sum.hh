@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace flecsi_lite::util {
 
@@ -20,21 +21,24 @@ class exact_sum {
 
   void add(double x) {
     if (x == 0) return;
-    int exponent = 0;
-    const double fraction = std::frexp(x, &exponent);  // x = fraction * 2^exponent
-    auto mantissa = static_cast<std::int64_t>(std::ldexp(std::fabs(fraction), 53));
-    int position = exponent - 53 + 1074;  // bit position of the mantissa's lowest bit
-    if (position < 0) {                   // subnormal: the low bits are zero
-      mantissa >>= -position;
-      position = 0;
+    // The mantissa and exponent read from the IEEE 754 bits (frexp and ldexp cost several times
+    // the rest of add): x = mantissa * 2^(position - 1074), exactly, subnormals included.
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits);
+    const int biased_exponent = static_cast<int>((bits >> 52) & 0x7ff);
+    std::uint64_t mantissa = bits & ((std::uint64_t(1) << 52) - 1);
+    int position = 0;  // bit position of the mantissa's lowest bit
+    if (biased_exponent != 0) {  // normal: the implicit leading bit
+      mantissa |= std::uint64_t(1) << 52;
+      position = biased_exponent - 1;
     }
     // mantissa * 2^shift spans three 32-bit digits; split it without 128-bit integers.
     const int digit = position / digit_bits, shift = position % digit_bits;
-    const std::uint64_t low = (static_cast<std::uint64_t>(mantissa) & mask) << shift;
-    const std::uint64_t high = (static_cast<std::uint64_t>(mantissa) >> digit_bits) << shift;
+    const std::uint64_t low = (mantissa & mask) << shift;
+    const std::uint64_t high = (mantissa >> digit_bits) << shift;
     const std::int64_t parts[3] = {std::int64_t(low & mask), std::int64_t((low >> digit_bits) + (high & mask)),
                                    std::int64_t(high >> digit_bits)};
-    const std::int64_t sign = x < 0 ? -1 : 1;
+    const std::int64_t sign = (bits >> 63) ? -1 : 1;
     for (int k = 0; k < 3 && digit + k < digits; ++k) digits_[digit + k] += sign * parts[k];
     if (++pending_ == (1 << 30)) normalize();
   }

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -49,4 +51,28 @@ TEST_CASE("exact sums handle the extremes of the double range") {
   big.add(-std::numeric_limits<double>::max());
   big.add(-2.5);
   CHECK(big.value() == -2.5);
+}
+
+TEST_CASE("one double added comes back exactly, over the whole range of bit patterns") {
+  // add() reads the mantissa and the exponent from the bits: every finite double, normal or
+  // subnormal, of either sign must survive the round trip, and cancel against its negative.
+  std::mt19937_64 random(11);
+  int checked = 0;
+  for (int i = 0; i < 200000; ++i) {
+    std::uint64_t bits = random();
+    if (i % 4 == 0) bits &= ~(std::uint64_t(0x7ff) << 52);  // a quarter of them subnormal
+    double x = 0;
+    std::memcpy(&x, &bits, sizeof x);
+    if (!std::isfinite(x)) continue;
+    exact_sum one(x);
+    exact_sum cancelled(x);
+    cancelled.add(-x);
+    if (one.value() != x || cancelled.value() != 0) FAIL("x = " << x);
+    ++checked;
+  }
+  CHECK(checked > 190000);
+  exact_sum boundary;  // the largest subnormal plus its smallest step is the smallest normal
+  boundary.add(std::numeric_limits<double>::min() - std::numeric_limits<double>::denorm_min());
+  boundary.add(std::numeric_limits<double>::denorm_min());
+  CHECK(boundary.value() == std::numeric_limits<double>::min());
 }
