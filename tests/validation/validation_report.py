@@ -177,8 +177,10 @@ def problem_section(problem, size, records, arguments, figures):
             if record is None:
                 lines.append("| %s | %s | | | **NO RECORD** |" % (run, cell(description)))
             else:
+                bounded = any(f["pass"] is not None for f in record["figures"]) or record["exit_status"] != 0
                 lines.append("| %s | %s | %.0f s | %d | %s |" % (run, cell(description), record["wall_seconds"],
-                                                                 record["exit_status"], verdict(record["pass"])))
+                                                                 record["exit_status"],
+                                                                 verdict(record["pass"] if bounded else None)))
     for plot in problem.get("plots", []):
         made, why_not = make_plot(plot, size, arguments, figures)
         if made:
