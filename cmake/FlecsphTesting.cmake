@@ -109,12 +109,36 @@ function(flecsph_add_bad_input_test name)
     FIXTURES_REQUIRED "bad_input_files;${arg_FIXTURES}" ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1")
 endfunction()
 
-# flecsph_add_validation(<name> APP <target> PARAMETERS <file> [RANKS <n1> <n2>] [ARGS <arg>...]):
+# Validation records (tests/validation/record_result.py): a recorded test runs its command through
+# the recorder, which passes the output and exit status through and writes the figures the run
+# printed (validation_problems.json says which) to FLECSPH_VALIDATION_RECORDS; validation.report
+# (tests/validation) writes the report from them after every test of the fixture validation_records.
+set(FLECSPH_VALIDATION_RECORDS ${PROJECT_BINARY_DIR}/validation/records)
+
+# flecsph_record_prefix(<var> <problem> <run>): the words that run a command through the recorder
+# as run <run> of problem <problem> at the size ci.
+function(flecsph_record_prefix var problem run)
+  set(${var} /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/validation/record_result.py
+      --records ${FLECSPH_VALIDATION_RECORDS} --size ci --problem ${problem} --run ${run} -- PARENT_SCOPE)
+endfunction()
+
+# flecsph_report_input(<test>...): the tests record figures or make plots for the report (fixture
+# validation_records). Call it after the tests' last set_tests_properties, which would replace it.
+function(flecsph_report_input)
+  foreach(_test IN LISTS ARGN)
+    set_property(TEST ${_test} APPEND PROPERTY FIXTURES_SETUP validation_records)
+  endforeach()
+endfunction()
+
+# flecsph_add_validation(<name> APP <target> PARAMETERS <file> [RANKS <n1> <n2>] [RECORD <problem>]
+#                        [ARGS <arg>...]):
 # validation.<name>.<n> runs the app with the parameter file and ARGS (its checks included) on n
 # ranks, one thread each, writing <name>_<n>.h5part; validation.<name>.rank_invariance compares
-# the last steps of the two runs bit by bit. RANKS: two rank counts, 1 and 2 by default.
+# the last steps of the two runs bit by bit. RANKS: two rank counts, 1 and 2 by default. RECORD:
+# the run on the second rank count records its figures as run <name> of <problem> (one record:
+# the two runs are bitwise equal).
 function(flecsph_add_validation name)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "APP;PARAMETERS" "RANKS;ARGS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "APP;PARAMETERS;RECORD" "RANKS;ARGS")
   if(NOT arg_RANKS)
     set(arg_RANKS 1 2)
   endif()
@@ -124,14 +148,22 @@ function(flecsph_add_validation name)
   endif()
   set(_outputs)
   set(_fixtures)
+  list(GET arg_RANKS 1 _recorded)
   foreach(_n IN LISTS arg_RANKS)
+    set(_prefix)
+    if(arg_RECORD AND _n EQUAL _recorded)
+      flecsph_record_prefix(_prefix ${arg_RECORD} ${name})
+    endif()
     add_test(NAME validation.${name}.${_n}
-      COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${_n} ${FLECSPH_MPIEXEC_FLAGS}
+      COMMAND ${_prefix} ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${_n} ${FLECSPH_MPIEXEC_FLAGS}
               $<TARGET_FILE:${arg_APP}> ${arg_PARAMETERS} ${arg_ARGS} --set output_file=${name}_${_n}.h5part
               --set progress_every=0 --set diagnostics_every=0 --no-timers
       WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
     set_tests_properties(validation.${name}.${_n} PROPERTIES PROCESSORS ${_n} TIMEOUT 600
       FIXTURES_SETUP ${name}_${_n} ENVIRONMENT "${FLECSPH_TEST_ENVIRONMENT};OMP_NUM_THREADS=1")
+    if(_prefix)
+      flecsph_report_input(validation.${name}.${_n})
+    endif()
     list(APPEND _outputs ${name}_${_n}.h5part)
     list(APPEND _fixtures ${name}_${_n})
   endforeach()
