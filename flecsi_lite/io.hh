@@ -17,6 +17,7 @@
 #include "flecsi_lite/io/io_error.hh"
 #include "flecsi_lite/io/output_path.hh"
 #include "flecsi_lite/io/particle_partition.hh"
+#include "flecsi_lite/io/run_state_checksums.hh"
 #include "flecsi_lite/io/snapshot_writer.hh"
 #include "flecsi_lite/io/step_info.hh"
 #include "flecsi_lite/io/xdmf_index.hh"

@@ -3,6 +3,7 @@
 #pragma once
 #include "flecsi_lite/runtime/context.hh"
 #include "flecsi_lite/runtime/derived_values.hh"
+#include "flecsi_lite/runtime/job_memory.hh"
 #include "flecsi_lite/runtime/log.hh"
 #include "flecsi_lite/runtime/name_table.hh"
 #include "flecsi_lite/runtime/options.hh"

@@ -162,7 +162,7 @@ void check_problem(const problem& problem, const sph::physics_settings& physics,
                                          dynamical_time(problem.mass, problem.radius, physics.gravity.constant),
                                          "star_mass, star_radius, gravitational_constant");
   if (problem.kind == setup::star) {
-    flecsi_lite::runtime::checked_count("bns", "particles", double(problem.particles), "particles");
+    flecsi_lite::runtime::checked_particles("bns", double(problem.particles), "particles");
     flecsi_lite::runtime::checked_length(
       "bns", "mean spacing", problem.radius * std::cbrt(4.0 / double(problem.particles)), "particles, star_radius");
     return;

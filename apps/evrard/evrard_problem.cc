@@ -25,7 +25,7 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
 
 void check_problem(const problem& problem, const sph::physics_settings& physics, double gravitational_constant) {
   const std::string keys = "particles, sphere_radius";
-  flecsi_lite::runtime::checked_count("evrard", "particles", double(problem.particles), "particles");
+  flecsi_lite::runtime::checked_particles("evrard", double(problem.particles), "particles");
   const double radius =
     flecsi_lite::runtime::checked_length("evrard", "sphere radius", problem.radius, "sphere_radius");
   const double spacing = flecsi_lite::runtime::checked_length(

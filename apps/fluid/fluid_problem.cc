@@ -139,6 +139,16 @@ layout layout_of(const std::string& program, const problem& p, flecsph::fluid::f
                               " puts fluid particles inside a wall: the fluid spans x in [" + text(l.fluid_lo[0]) +
                               ", " + text(l.fluid_hi[0]) + "], the tank's inside [" + text(l.tank_lo[0]) + ", " +
                               text(l.tank_hi[0]) + "]");
+  // The fluid block's lattice (the walls come on top of it) must fit in the job's memory.
+  double fluid_count = 1;
+  for (int k = 0; k < p.dimension; ++k)
+    fluid_count *= std::max(1.0, std::floor((l.fluid_hi[k] - l.fluid_lo[k]) / l.dx * (1 + 1e-12)));
+  const std::string extent_keys =
+    p.type == problem_type::dam_break
+      ? (p.dimension == 3 ? "column_width, column_height, span" : "column_width, column_height")
+    : p.type == problem_type::still_tank ? "tank_width"
+                                         : "channel_length";
+  rt::checked_particles(program, fluid_count, "particles, " + extent_keys);
   fluid.expected_speed = l.speed_scale;
   flecsph::fluid::check_sound_speed(program, fluid);
   return l;

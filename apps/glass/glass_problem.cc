@@ -32,8 +32,8 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
 }
 
 void check_problem(const problem& problem, const sph::physics_settings& physics, int dimension) {
-  flecsi_lite::runtime::checked_count("glass", "particles", std::pow(double(problem.per_side), dimension),
-                                      "particles_per_side, dimension");
+  flecsi_lite::runtime::checked_particles("glass", std::pow(double(problem.per_side), dimension),
+                                          "particles_per_side, dimension");
   const double spacing =
     flecsi_lite::runtime::checked_length("glass", "mean spacing", 1.0 / double(problem.per_side), "particles_per_side");
   flecsi_lite::runtime::checked_length("glass", "smoothing length", physics.eta * spacing, "eta, particles_per_side");

@@ -17,8 +17,8 @@ const flecsi_lite::runtime::parameter_block<problem>& problem_parameters() {
 }
 
 void check_problem(const problem& problem, const sph::physics_settings& physics) {
-  flecsi_lite::runtime::checked_count("gresho", "particles", double(problem.per_side) * double(problem.per_side),
-                                      "particles_per_side");
+  flecsi_lite::runtime::checked_particles("gresho", double(problem.per_side) * double(problem.per_side),
+                                          "particles_per_side");
   const double spacing = flecsi_lite::runtime::checked_length("gresho", "lattice spacing",
                                                               1.0 / double(problem.per_side), "particles_per_side");
   flecsi_lite::runtime::checked_length("gresho", "smoothing length", physics.eta * spacing, "eta, particles_per_side");

@@ -89,8 +89,8 @@ std::vector<row> particle_rows(const problem& problem) {
 
 void check_problem(const problem& problem, const sph::physics_settings& physics) {
   const double densest = std::max(problem.rho1, problem.rho2), thinnest = std::min(problem.rho1, problem.rho2);
-  flecsi_lite::runtime::checked_count(
-    "kelvin_helmholtz", "particles", double(problem.per_side) * double(problem.per_side) * densest / problem.rho1 * 1.5,
+  flecsi_lite::runtime::checked_particles(
+    "kelvin_helmholtz", double(problem.per_side) * double(problem.per_side) * densest / problem.rho1 * 1.5,
     "particles_per_side, rho1, rho2");
   flecsi_lite::runtime::checked_length("kelvin_helmholtz", "smoothing length",
                                        physics.eta / double(problem.per_side) * std::sqrt(problem.rho1 / densest),

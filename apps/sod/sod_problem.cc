@@ -103,7 +103,8 @@ void check_layout(const problem& problem, const sph::physics_settings& physics, 
   checked_count("sod", "particles per layer on the right", layer_right, "tube_width, " + tube_keys);
   const double particles =
     double(layout.walls_left + layout.left) * layer_left + double(layout.right + layout.walls_right) * layer_right;
-  checked_count("sod", "particles of the tube", particles, "wall_layers, search_margin, eta, tube_width, " + tube_keys);
+  flecsi_lite::runtime::checked_particles("sod", particles,
+                                          "wall_layers, search_margin, eta, tube_width, " + tube_keys);
   checked_positive("sod", "particle mass", layout.mass, tube_keys);
   checked_length("sod", "spacing along x on the left", layout.spacing_left, tube_keys);
   checked_length("sod", "spacing along x on the right", layout.spacing_right, tube_keys);

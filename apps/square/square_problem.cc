@@ -39,9 +39,8 @@ void check_problem(const problem& problem, const sph::physics_settings& physics)
       "square: equal masses need a whole number of square lattice particles per side, "
       "particles_per_side sqrt(square_density / ambient_density) / 2 = " +
       std::to_string(exact));
-  flecsi_lite::runtime::checked_count("square", "particles",
-                                      double(problem.per_side) * double(problem.per_side) + inner * inner,
-                                      "particles_per_side, square_density, ambient_density");
+  flecsi_lite::runtime::checked_particles("square", double(problem.per_side) * double(problem.per_side) + inner * inner,
+                                          "particles_per_side, square_density, ambient_density");
   const double spacing = 1.0 / double(problem.per_side);
   flecsi_lite::runtime::checked_length("square", "smoothing length",
                                        physics.eta * spacing * 0.5 / inner * double(problem.per_side),

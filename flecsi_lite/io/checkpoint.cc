@@ -1,17 +1,38 @@
 // Checkpoint writing and reading on top of the H5Part writer and reader (see checkpoint.hh).
 #include "flecsi_lite/io/checkpoint.hh"
 
+#include "flecsi_lite/io/run_state_checksums.hh"
+
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <vector>
 
 namespace flecsi_lite::io {
+
+namespace {
+/// The clock's attribute names in Step#0, as the checksum lines name them.
+constexpr const char* clock_attributes[] = {"time", "step", "dt"};
+
+/// The run state under checksum: its entries as "state:<name>" (their root attribute names).
+checked_values state_values(const run_state& state) {
+  checked_values values;
+  for (const auto& [name, value] : state) values[checkpoint_state_prefix + name] = value;
+  return values;
+}
+}  // namespace
 
 void write_checkpoint(const std::string& path, const step_info& info, const run_state& state,
                       const std::function<void(h5part_writer&)>& write_arrays, MPI_Comm comm) {
   h5part_writer writer(path, comm);
   writer.set_attribute(checkpoint_marker, std::int64_t{1});
   for (const auto& [name, value] : state) writer.set_attribute(checkpoint_state_prefix + name, value);
+  // The clock as begin_step writes it: time and dt doubles, step a 64-bit integer.
+  checked_values values = state_values(state);
+  values["time"] = info.time;
+  values["step"] = info.step;
+  values["dt"] = info.dt;
+  writer.set_attribute(checksums_attribute, checksums_text(values));
   writer.begin_step(info);
   write_arrays(writer);
   writer.end_step();
@@ -30,6 +51,34 @@ checkpoint_contents read_checkpoint(const h5part_reader& reader) {
     if (name.compare(0, prefix.size(), prefix) == 0)
       contents.state[name.substr(prefix.size())] = reader.root_attribute(name);
   return contents;
+}
+
+void verify_run_state(const h5part_reader& reader, const checkpoint_contents& contents) {
+  const std::string where = "checkpoint '" + reader.path() + "'";
+  const auto names = reader.root_attribute_names();
+  if (std::find(names.begin(), names.end(), checksums_attribute) == names.end())
+    throw layout_error(where + " has no root attribute '" + checksums_attribute +
+                       "': it was written before checkpoints held checksums of their run state (or the attribute was "
+                       "removed), so a restart cannot tell a changed time, step or dt from the written one; make "
+                       "the checkpoint again with this version (rerun from the start, or from initial_data)");
+  const auto checksums =
+    attribute_as<std::string>(reader.root_attribute(checksums_attribute), where + " root attribute 'checksums'");
+  // The clock as the file holds it (not step_information's fallbacks: a missing 'time' is a change).
+  checked_values values = state_values(contents.state);
+  const auto step_names = reader.step_attribute_names(0);
+  for (const char* name : clock_attributes)
+    if (std::find(step_names.begin(), step_names.end(), name) != step_names.end())
+      values[name] = reader.step_attribute(0, name);
+  const auto changed = changed_values(checksums, values);
+  if (changed.empty()) return;
+  std::string list;
+  for (const auto& name : changed) {
+    const bool clock = name.compare(0, std::strlen(checkpoint_state_prefix), checkpoint_state_prefix) != 0;
+    list += (list.empty() ? "" : ", ") + std::string(clock ? "Step#0 attribute '" : "root attribute '") + name + "'";
+  }
+  throw layout_error(where + ": " + list + (changed.size() == 1 ? " differs" : " differ") +
+                     " from the value the writing run stored (root attribute 'checksums'): a restart from a changed "
+                     "run state would not continue that run");
 }
 
 std::optional<std::uint64_t> duplicate_id(const std::uint64_t* ids, std::size_t count, MPI_Comm comm) {

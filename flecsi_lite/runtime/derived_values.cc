@@ -37,4 +37,17 @@ std::int64_t checked_count(const std::string& program, const std::string& what, 
   return std::llround(value);
 }
 
+std::int64_t checked_particles(const std::string& program, double value, const std::string& keys, double memory) {
+  const std::int64_t count = checked_count(program, "particles", value, keys);
+  const double needed = double(count) * least_bytes_per_particle;
+  if (needed <= memory) return count;
+  std::ostringstream message;
+  message.precision(3);
+  message << "need at least " << needed << " bytes (" << least_bytes_per_particle
+          << " bytes a particle), more than the " << memory
+          << " bytes this job may use (physical memory, ulimit -v and control-group limits of its nodes): "
+          << "lower " << keys << " or run on more nodes";
+  throw parameter_error(derived_problem(program, "particles", value, keys, message.str()));
+}
+
 }  // namespace flecsi_lite::runtime

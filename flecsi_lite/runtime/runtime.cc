@@ -3,6 +3,7 @@
 #include "flecsi_lite/runtime/runtime.hh"
 
 #include "flecsi_lite/runtime/context.hh"
+#include "flecsi_lite/runtime/job_memory.hh"
 #include "flecsi_lite/runtime/log.hh"
 #include "flecsi_lite/runtime/thread_share.hh"
 #include "flecsi_lite/runtime/timers.hh"
@@ -113,6 +114,7 @@ runtime::runtime(int& argc, char**& argv, options program_options) : options_(st
   }
   log::set_all_ranks(options_.has("log-all-ranks"));
   detail::warn_if_oversubscribed(communicator());
+  global_settings.job_memory = detect_job_memory(communicator());
   if (options_.has("control-model"))
     global_settings.control_model_file = global_settings.program + "-control-model.dot";
   global_settings.trace_file = options_.get("trace");

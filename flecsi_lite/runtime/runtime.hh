@@ -11,6 +11,7 @@
 #include "flecsi_lite/runtime/options.hh"
 
 #include <functional>
+#include <limits>
 #include <string>
 
 namespace flecsi_lite::runtime {
@@ -21,6 +22,9 @@ struct settings {
   std::string control_model_file;  // non-empty: write the control model as Graphviz and stop
   std::string trace_file;          // non-empty: the executor records a trace there
   bool timers = true;              // print the timer summary at exit
+  // Bytes all ranks may allocate together (detect_job_memory, job_memory.hh); +inf until the
+  // runtime has started.
+  double job_memory = std::numeric_limits<double>::infinity();
 };
 const settings& current_settings();
 

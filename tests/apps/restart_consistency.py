@@ -4,11 +4,16 @@
 # break), each restarted as written (exit 0), then broken one way at a time with h5py: a step
 # window ending at 2^62, a NaN time bin, swapped or zeroed step windows, the timeline's now moved
 # back one tick, no 'time' attribute, a dt of 1e300. Each must exit with status 3 naming the
-# file, the dataset or attribute and, for a particle's value, its id.
+# file, the dataset or attribute and, for a particle's value, its id. The clock and run state
+# carry checksums (root attribute 'checksums'): a changed value that no other check refuses (a
+# global-step dt one ulp off, another step counter) is refused naming it, and so is a checkpoint
+# without checksums; the dt of 1e300 is refused by the checksums, and, with checksums made to
+# match it (as a faulty writer would), by the check against what was left of the run.
 #
 #   restart_consistency.py SEDOV SEDOV_2D_PAR FLUID DAM_BREAK_PAR MPIEXEC NUMPROC_FLAG [MPIEXEC_FLAGS...]
 import os
 import shutil
+import struct
 import subprocess
 import sys
 
@@ -44,6 +49,26 @@ def broken(source, name, change):
     with h5py.File(name, "r+") as f:
         change(f)
     return name
+
+
+def fnv1a(kind, data):
+    """64-bit FNV-1a of a value's kind byte and bytes (flecsi_lite/io/run_state_checksums.hh)."""
+    h = 0xcbf29ce484222325
+    for byte in bytes([kind]) + data:
+        h = ((h ^ byte) * 0x100000001b3) % 2**64
+    return h
+
+
+def resealed_dt(value):
+    """Sets Step#0's dt and its checksum line to match, as a faulty writer would have written it."""
+    def change(f):
+        f["Step#0"].attrs["dt"] = value
+        lines = f.attrs["checksums"]
+        lines = (lines.decode() if isinstance(lines, bytes) else lines).splitlines()
+        lines = [("dt %016x" % fnv1a(1, struct.pack("<d", value))) if line.startswith("dt ") else line
+                 for line in lines]
+        f.attrs["checksums"] = "".join(line + "\n" for line in lines)
+    return change
 
 
 def replace_dataset(step, name, values):
@@ -115,6 +140,14 @@ cases = [
 ]
 for case, change, message in cases:
     refused(sedov, sedov_par, case, change, message, "individual.h5part", resume)
+# Values only the checksums tell from the written ones, and a checkpoint without them.
+refused(sedov, sedov_par, "step_changed", lambda f: f["Step#0"].attrs.__setitem__("step", np.int64(3)),
+        "Step#0 attribute 'step' differs from the value the writing run stored", "individual.h5part", resume)
+refused(sedov, sedov_par, "initial_mass_changed",
+        lambda f: f.attrs.__setitem__("state:initial_mass", 2 * f.attrs["state:initial_mass"]),
+        "root attribute 'state:initial_mass' differs", "individual.h5part", resume)
+refused(sedov, sedov_par, "no_checksums", lambda f: f.attrs.__delitem__("checksums"),
+        "has no root attribute 'checksums'", "individual.h5part", resume)
 # The particle is named by its id.
 refused(sedov, sedov_par, "step_end_names_id", set_element("step_end", fluid_index, 2**62),
         f"for the particle with id {fluid_id}", "individual.h5part", resume, ranks=2)
@@ -125,9 +158,16 @@ write_checkpoint(fluid, dam_break_par, "fluid.h5part", small_fluid)
 code, output = run(fluid, [dam_break_par, "--set", "output_file=none", "--set", "restart_file=fluid.h5part",
                            "--set", "particles=10", "--set", "max_steps=4"])
 check(code == 0, f"fluid: the checkpoint as written restarts (exit {code})")
+fluid_resume = ["--set", "particles=10", "--set", "max_steps=4"]
 refused(fluid, dam_break_par, "fluid_dt_1e300", lambda f: f["Step#0"].attrs.__setitem__("dt", 1e300),
+        "Step#0 attribute 'dt' differs from the value the writing run stored", "fluid.h5part", fluid_resume)
+refused(fluid, dam_break_par, "fluid_dt_1e300_resealed", resealed_dt(1e300),
         "attribute 'dt' = 1.0000000000000001e+300 is longer than what was left of the run", "fluid.h5part",
-        ["--set", "particles=10", "--set", "max_steps=4"])
+        fluid_resume)
+with h5py.File("fluid.h5part", "r") as f:
+    fluid_dt = float(f["Step#0"].attrs["dt"])
+refused(fluid, dam_break_par, "fluid_dt_next", lambda f: f["Step#0"].attrs.__setitem__("dt", np.nextafter(fluid_dt, 1)),
+        "Step#0 attribute 'dt' differs", "fluid.h5part", fluid_resume, ranks=2)
 
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)

@@ -8,11 +8,11 @@
 namespace lattices {
 
 double check_cubic_lattice(const std::string& program, const cubic_lattice& lattice, double eta, int dimension) {
-  using flecsi_lite::runtime::checked_count;
   using flecsi_lite::runtime::checked_length;
   using flecsi_lite::runtime::checked_positive;
   const std::string lattice_keys = "box_side, particles_per_side";
-  checked_count(program, "particles", std::pow(double(lattice.per_side), dimension), "particles_per_side, dimension");
+  flecsi_lite::runtime::checked_particles(program, std::pow(double(lattice.per_side), dimension),
+                                          "particles_per_side, dimension");
   const double spacing = checked_length(
     program, "lattice spacing",
     checked_length(program, "box side", lattice.side, "box_side") / double(lattice.per_side), lattice_keys);

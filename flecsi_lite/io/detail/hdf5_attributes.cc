@@ -60,6 +60,8 @@ attribute_value read_attribute(hid_t location, const std::string& name, const st
       if (H5Tis_variable_str(type.get()) > 0) {
         auto memory = datatype_handle(H5Tcopy(H5T_C_S1));
         H5Tset_size(memory.get(), H5T_VARIABLE);
+        // In the file's character set: HDF5 converts no UTF-8 string (h5py's str) to ASCII.
+        H5Tset_cset(memory.get(), H5Tget_cset(type.get()));
         char* text = nullptr;
         if (H5Aread(attribute.get(), memory.get(), &text) < 0) fail("cannot read " + what);
         std::string result = text ? text : "";

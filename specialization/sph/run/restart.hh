@@ -211,8 +211,9 @@ void write_restart_checkpoint(simulation<D>& s, const std::string& path, flecsi_
 /// restarted, so that the driver does not recompute the state of the restart step. The
 /// checkpoint's clock must be usable (detail::check_clock, with s.run.end_time), its ids unique,
 /// with individual time steps its timeline, clock and step windows consistent (restart_checks.hh),
-/// and its run state must hold the dimension D and every entry of `required` (e.g. the program)
-/// with the same value. The tree settings (box, periodic axes) must be set. Returns the
+/// its run state must hold the dimension D and every entry of `required` (e.g. the program)
+/// with the same value, and the clock and run state must match their checksums
+/// (flecsi_lite::io::verify_run_state). The tree settings (box, periodic axes) must be set. Returns the
 /// checkpoint's run state.
 template<int D>
 flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::string& path,
@@ -240,6 +241,9 @@ flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::
     detail::check_clock_on_timeline(path, s.clock, s.time, s.dt, s.run.end_time);
     detail::check_time_bins(in, s.clock);
   }
+  // Last, so that the checks above name what is inconsistent when they can; the checksums then
+  // refuse any other changed clock or run-state value (one that would continue another run).
+  flecsi_lite::io::verify_run_state(in, contents);
   detail::distribute_as_written(s);
   s.restarted = true;
   return contents.state;

@@ -7,8 +7,10 @@
 #include "flecsi_lite/io/detail/h5part_layout.hh"
 #include "flecsi_lite/io/h5part_reader.hh"
 #include "flecsi_lite/io/h5part_writer.hh"
+#include "flecsi_lite/io/run_state_checksums.hh"
 #include "tests/support/collective_checks.hh"
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -268,6 +270,7 @@ TEST_CASE("a checkpoint holds one full-precision step and the run state") {
     const slice block = in.block(0);
     const auto x = in.read<double>(0, "x");
     for (std::uint64_t i = 0; i < block.count; ++i) CHECK(x[i] == x_of(block.offset + i, 0) / 3);
+    CHECK_NOTHROW(verify_run_state(in, contents));  // the checksums match what was written
   }
 
   // A checkpoint that fails while being written leaves the previous one as it was.
@@ -286,6 +289,54 @@ TEST_CASE("a checkpoint holds one full-precision step and the run state") {
   write_series(plain, 1);
   h5part_reader other(plain);
   CHECK_THAT(error_message<file_error>([&] { read_checkpoint(other); }), Catch::Contains("is not a checkpoint"));
+}
+
+namespace {
+// A file written like a checkpoint by hand: the marker, `state`, a clock and, unless empty, `checksums`.
+void write_like_checkpoint(const std::string& path, const run_state& state, const step_info& info,
+                           const std::string& checksums) {
+  h5part_writer out(path);
+  out.set_attribute(checkpoint_marker, std::int64_t{1});
+  for (const auto& [name, value] : state) out.set_attribute(checkpoint_state_prefix + name, value);
+  if (!checksums.empty()) out.set_attribute(checksums_attribute, checksums);
+  out.begin_step(info);
+  out.write("x", std::vector<double>(local_count(rank(), 0), 1.0));
+  out.end_step();
+  out.close();
+}
+}  // namespace
+
+TEST_CASE("a restart's run state must match the checksums written with it") {
+  const std::string path = file_name("checksums", ".chk");
+  remove_files({path});
+  const run_state state{{"next_output", 0.5}, {"output_due", std::int64_t{1}}, {"program", std::string("sod")}};
+  const step_info info{0.25, 7, 1e-3};
+  const checked_values written{{"time", 0.25},
+                               {"step", std::int64_t{7}},
+                               {"dt", 1e-3},
+                               {"state:next_output", 0.5},
+                               {"state:output_due", std::int64_t{1}},
+                               {"state:program", std::string("sod")}};
+  const auto verify = [&] {
+    h5part_reader in(path);
+    verify_run_state(in, read_checkpoint(in));
+  };
+  // Checksums of other values (dt one ulp up, output_due 2): both named, the others not.
+  checked_values other = written;
+  other["dt"] = std::nextafter(1e-3, 1.0);
+  other["state:output_due"] = std::int64_t{2};
+  write_like_checkpoint(path, state, info, checksums_text(other));
+  const auto changed = error_message<layout_error>(verify);
+  CHECK_THAT(changed, Catch::Contains("Step#0 attribute 'dt', root attribute 'state:output_due' differ from the "
+                                      "value the writing run stored"));
+  CHECK_THAT(changed, !Catch::Contains("'time'") && !Catch::Contains("state:program"));
+  // The same values: accepted.
+  write_like_checkpoint(path, state, info, checksums_text(written));
+  CHECK_NOTHROW(verify());
+  // Without checksums (a checkpoint of an earlier version): refused, saying to make it again.
+  write_like_checkpoint(path, state, info, "");
+  CHECK_THAT(error_message<layout_error>(verify),
+             Catch::Contains("has no root attribute 'checksums'") && Catch::Contains("make the checkpoint again"));
 }
 
 TEST_CASE("identical runs write byte-identical files") {
