@@ -72,17 +72,20 @@ def running_mean(T, p, width):
     return mean
 
 
-def ringing_period(T, p, onset, span=0.5):
-    """The period of the acoustic ringing after the impact: the first maximum (after its first
-    zero) of the autocorrelation of p over [onset, onset + span], on a uniform grid at the rows'
-    median interval, less its cubic trend (the impact's rise and decay). nan if none is found."""
+def ringing_period(T, series, onset, span=0.5):
+    """The period of the acoustic ringing after the impact, one for all the sensors: the first
+    maximum (after its first zero) of the sum of the autocorrelations of each p in `series` over
+    [onset, onset + span], on a uniform grid at the rows' median interval, each less its cubic
+    trend (the impact's rise and decay). nan if none is found."""
     dt = float(np.median(np.diff(T)))
     grid = np.arange(onset, min(onset + span, T[-1]), dt)
     if len(grid) < 16:
         return float("nan")
-    q = np.interp(grid, T, p)
-    q = q - np.polyval(np.polyfit(grid - onset, q, 3), grid - onset)
-    correlation = np.correlate(q, q, "full")[len(q) - 1:]
+    correlation = 0
+    for p in series:
+        q = np.interp(grid, T, p)
+        q = q - np.polyval(np.polyfit(grid - onset, q, 3), grid - onset)
+        correlation = correlation + np.correlate(q, q, "full")[len(q) - 1:]
     negative = np.nonzero(correlation < 0)[0]
     if len(negative) == 0:
         return float("nan")
@@ -126,9 +129,8 @@ def main():
           "the gauge is sampled %s" % (args.run, run.length / run.dx, interval, experiment_interval(),
                                         "coarser" if interval > experiment_interval() else "finer"))
     print("  onset at sensor 2: t sqrt(g/H) = %.3f (bound [%g, %g]: %s)" % (onset, *ONSET, verdict(onset, *ONSET)))
-    period = [ringing_period(T, p, onset) for p in (p1, p2)]
-    smoothed = first_impact(T, np.nan_to_num(running_mean(T, p1, period[0])),
-                            np.nan_to_num(running_mean(T, p2, period[1])))
+    period = ringing_period(T, (p1, p2), onset)
+    smoothed = first_impact(T, np.nan_to_num(running_mean(T, p1, period)), np.nan_to_num(running_mean(T, p2, period)))
     Tw, p1w = window_means(T, p1)
     _, p2w = window_means(T, p2)
     averaged = first_impact(Tw, np.nan_to_num(p1w), np.nan_to_num(p2w))
@@ -139,7 +141,7 @@ def main():
               "Lobovsky et al. Table 2: median %.3f, 2.5-97.5%% [%.3f, %.3f]: %s); averaged over the ringing period "
               "%.4f: %.3f (%s); averaged over 0.01: %.3f; read every 0.01: %.3f (%.2f-%.2f over the grid's phases)" %
               (k, centre, raw, *bound, verdict(raw, *bound), median, p_low, p_high, verdict(raw, p_low, p_high),
-               period[k - 1], smoothed[k], verdict(smoothed[k], p_low, p_high), averaged[k], sampled[k],
+               period, smoothed[k], verdict(smoothed[k], p_low, p_high), averaged[k], sampled[k],
                low[k - 1], high[k - 1]))
     reference = np.loadtxt(fronts.REFERENCE)
     H = fronts.REFERENCE_H
