@@ -124,7 +124,8 @@ def main():
     p1, p2 = run["p_1"] / scale, run["p_2"] / scale
     onset, peak1, peak2 = first_impact(T, p1, p2)
     experiment = experiment_statistics()
-    interval = float(np.median(np.diff(T[(T >= onset - 0.05) & (T <= onset + 0.5)]))) if onset == onset else float("nan")
+    around = (T >= onset - 0.05) & (T <= onset + 0.5)
+    interval = float(np.median(np.diff(T[around]))) if np.count_nonzero(around) > 1 else float("nan")
     print("%s (dx = H/%.0f): rows every %.2e of t sqrt(g/H) around the impact, the experiment's 20 kHz %.2e: "
           "the gauge is sampled %s" % (args.run, run.length / run.dx, interval, experiment_interval(),
                                         "coarser" if interval > experiment_interval() else "finer"))
@@ -137,9 +138,9 @@ def main():
     sampled, low, high = point_samples(T, p1, p2)
     for k, raw, bound in ((1, peak1, PEAK_1), (2, peak2, PEAK_2)):
         centre, median, p_low, p_high = experiment[k]
-        print("  first peak, sensor %d (centre %g mm at H = 0.3 m), rho0 g H: raw %.3f (the issue's bound [%g, %g]: %s; "
-              "Lobovsky et al. Table 2: median %.3f, 2.5-97.5%% [%.3f, %.3f]: %s); averaged over the ringing period "
-              "%.4f: %.3f (%s); averaged over 0.01: %.3f; read every 0.01: %.3f (%.2f-%.2f over the grid's phases)" %
+        print("  first peak, sensor %d (centre %g mm at H = 0.3 m), rho0 g H: raw %.3f (the issue's bound [%g, %g]: "
+              "%s; Lobovsky et al. Table 2: median %.3f, 2.5-97.5%% [%.3f, %.3f]: %s); averaged over the ringing "
+              "period %.4f: %.3f (%s); averaged over 0.01: %.3f; read every 0.01: %.3f (%.2f-%.2f over the grid's phases)" %
               (k, centre, raw, *bound, verdict(raw, *bound), median, p_low, p_high, verdict(raw, p_low, p_high),
                period, smoothed[k], verdict(smoothed[k], p_low, p_high), averaged[k], sampled[k],
                low[k - 1], high[k - 1]))
