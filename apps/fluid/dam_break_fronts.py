@@ -7,6 +7,7 @@ these functions and nothing else.
 
     dam_break_fronts.py reference RUN.gauges.csv [--tank-length 5.366]      # Lobovsky/Marrone geometry
     dam_break_fronts.py martin-moyce RUN.gauges.csv [RUN2.gauges.csv ...]   # the 1 x 2 column
+    dam_break_fronts.py change COARSE.gauges.csv FINE.gauges.csv             # the 1 x 2 column
 """
 import argparse
 import math
@@ -113,14 +114,38 @@ def against_martin_moyce(run):
     return raw, float(shifts[best]), float(means[best])
 
 
+def front_change(coarse, fine, window=(1.0, 2.8)):
+    """How much the front of the 1 x 2 column moves from one resolution to the next: the relative
+    difference of Z between the two runs at the finer run's rows in `window` of T (mean, largest),
+    and at Martin & Moyce's nine points (largest)."""
+    T_c, Z_c = martin_moyce_curve(coarse)
+    T_f, Z_f = martin_moyce_curve(fine)
+    if min(T_c[-1], T_f[-1]) < window[1]:
+        sys.exit("dam_break_fronts: a run ends before T = %.2f" % window[1])
+    keep = (T_f >= window[0]) & (T_f <= window[1])
+    change = np.abs(Z_f[keep] - np.interp(T_f[keep], T_c, Z_c)) / np.interp(T_f[keep], T_c, Z_c)
+    T_exp, _ = martin_moyce_points(*window)
+    at_points = np.abs(np.interp(T_exp, T_f, Z_f) - np.interp(T_exp, T_c, Z_c)) / np.interp(T_exp, T_c, Z_c)
+    return float(change.mean()), float(change.max()), float(at_points.max())
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("against", choices=["reference", "martin-moyce"])
+    parser.add_argument("against", choices=["reference", "martin-moyce", "change"])
     parser.add_argument("runs", nargs="+")
     parser.add_argument("--tank-length", type=float, default=5.366)
     parser.add_argument("--window", nargs=2, type=float, default=[1.0, 2.3],
                         help="reference: the span of t sqrt(g/H) compared (the issue's: 1.0 2.3)")
     args = parser.parse_args()
+    if args.against == "change":
+        if len(args.runs) != 2:
+            sys.exit("dam_break_fronts: change takes the coarser run's gauge file, then the finer one's")
+        coarse, fine = GaugeFile(args.runs[0]), GaugeFile(args.runs[1])
+        mean, largest, at_points = front_change(coarse, fine)
+        print("front Z from L/%.0f to L/%.0f over 1 <= T <= 2.8: relative change mean %.4f, largest %.4f; at Martin & "
+              "Moyce's nine points largest %.4f" % (coarse.length / coarse.dx, fine.length / fine.dx, mean, largest,
+                                                    at_points))
+        return
     for path in args.runs:
         run = GaugeFile(path)
         if args.against == "reference":

@@ -6,9 +6,12 @@ app's gauge files (gauge_file: the front operator's front_x and the wall gauges)
         left: x_f / H against t sqrt(g/H) in the Marrone / Lobovsky geometry with TrixiParticles'
         converged H/400 run; right: Z = x_f / a against T = t sqrt(2 g / a) in the 1 x 2 column with
         Martin & Moyce's Table 2, each run also delayed by its best constant shift (stated).
-    plot_dam_break_validation.py pressure RUN.gauges.csv ... --out P.png
+    plot_dam_break_validation.py pressure RUN.gauges.csv ... --out P.png [--ringing]
         p / (rho0 g H) at gauges 1 and 2 (Lobovsky et al.'s sensors 1 and 2) against t sqrt(g/H),
-        with TrixiParticles' H/400 sensors and the issue's bands for the first impact.
+        with TrixiParticles' H/400 sensors, the experiment's first peak (Lobovsky et al. 2014
+        Table 2: median and 2.5-97.5% band over 100 repetitions, lobovsky_2014_pressure.txt) and
+        the issue's bounds on the first impact; with --ringing each run also averaged over its
+        acoustic ringing period (dam_break_pressure.py), dashed.
     plot_dam_break_validation.py shapes RUN.h5part --out S.png
         the water at every output time (colour: pressure).
 """
@@ -26,6 +29,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "plotting"))
 import dam_break_fronts as fronts  # noqa: E402
+import dam_break_pressure as pressure  # noqa: E402
 
 
 def label(run):
@@ -71,23 +75,35 @@ def plot_fronts(reference_runs, martin_moyce_runs, out):
     fig.tight_layout(); fig.savefig(out, dpi=120)
 
 
-def plot_pressure(runs, out, t_range=(0.0, 8.0), p_max=4.5):
+def plot_pressure(runs, out, t_range=(0.0, 8.0), p_max=4.5, ringing=False):
     fig, axes = plt.subplots(1, 2, figsize=(13, 5))
     reference = np.loadtxt(fronts.REFERENCE)
     H_ref = fronts.REFERENCE_H
     T_ref = reference[:, 0] * math.sqrt(fronts.G / H_ref)
-    bands = {1: (2.0, 4.0), 2: (1.5, 2.6)}  # the issue's bounds on the first peak, rho0 g H
+    bounds = {1: pressure.PEAK_1, 2: pressure.PEAK_2}  # the issue's, on the first peak
+    experiment = pressure.experiment_statistics()
     for k, ax in zip((1, 2), axes):
         ax.plot(T_ref, reference[:, 1 + k] / (1000 * fronts.G * H_ref), "k-", lw=1.5,
                 label="TrixiParticles WCSPH H/400 (H = 0.6 m)")
         for path in runs:
             run = fronts.GaugeFile(path)
-            ax.plot(run["t"] * math.sqrt(run.g / run.length), run["p_%d" % k] / (run.rho0 * run.g * run.length), "-",
-                    lw=1, label="%s (H = %g m)" % (label(run), run.length))
-        low, high = bands[k]
-        ax.axhspan(low, high, xmin=0, xmax=1, color="tab:red", alpha=0.12, label="first peak: issue's band")
+            T = run["t"] * math.sqrt(run.g / run.length)
+            scale = run.rho0 * run.g * run.length
+            line, = ax.plot(T, run["p_%d" % k] / scale, "-", lw=1, label="%s (H = %g m)" % (label(run), run.length))
+            if ringing:
+                onset, _, _ = pressure.first_impact(T, run["p_1"] / scale, run["p_2"] / scale)
+                period = pressure.ringing_period(T, (run["p_1"] / scale, run["p_2"] / scale), onset)
+                ax.plot(T, pressure.running_mean(T, run["p_%d" % k] / scale, period), "--", color=line.get_color(),
+                        lw=1.5, label="  averaged over its ringing period %.4f" % period)
+        _, median, low, high = experiment[k]
+        ax.axhspan(low, high, color="tab:red", alpha=0.15,
+                   label="first peak, Lobovsky et al. 2014 (H = 0.3 m): 2.5-97.5%% [%.2f, %.2f]" % (low, high))
+        ax.axhline(median, color="tab:red", ls="--", lw=1, label="  their median %.2f" % median)
+        for bound in bounds[k]:
+            ax.axhline(bound, color="tab:red", ls=":", lw=1)
+        ax.plot([], [], color="tab:red", ls=":", lw=1, label="first peak: the issue's bounds [%g, %g]" % bounds[k])
         if k == 2:
-            ax.axvspan(2.33, 2.49, color="tab:blue", alpha=0.12, label="onset p > 0.1 rho g H: issue's band")
+            ax.axvspan(*pressure.ONSET, color="tab:blue", alpha=0.12, label="onset p > 0.1 rho g H: issue's band")
         ax.set_xlim(*t_range); ax.set_ylim(-0.2, p_max)
         ax.set_xlabel("t sqrt(g / H)"); ax.set_ylabel("p / (rho0 g H)")
         ax.set_title("sensor %d (downstream wall, centre %g H)" % (k, 0.01 if k == 1 else 0.05), fontsize=10)
@@ -125,11 +141,12 @@ def main():
     parser.add_argument("--out", required=True)
     parser.add_argument("--t-range", nargs=2, type=float, default=[0.0, 8.0], help="pressure: t sqrt(g/H) shown")
     parser.add_argument("--p-max", type=float, default=4.5, help="pressure: the top of the p / (rho0 g H) axis")
+    parser.add_argument("--ringing", action="store_true", help="pressure: also each run averaged over its ringing")
     args = parser.parse_args()
     if args.figure == "fronts":
         plot_fronts(args.reference, args.martin_moyce, args.out)
     elif args.figure == "pressure":
-        plot_pressure(args.files, args.out, args.t_range, args.p_max)
+        plot_pressure(args.files, args.out, args.t_range, args.p_max, args.ringing)
     else:
         plot_shapes(args.files[0], args.out)
     print("wrote", args.out)
