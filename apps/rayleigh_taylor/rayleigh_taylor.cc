@@ -5,7 +5,6 @@
 // (rt_linear_theory.py).
 //
 //   mpirun -np 2 rayleigh_taylor apps/rayleigh_taylor/rayleigh_taylor.par [--set particles_per_side=128]
-#include "hydrostatic_start.hh"
 #include "rayleigh_taylor_problem.hh"
 #include "uniform_gravity.hh"
 
@@ -41,10 +40,6 @@ int run(const app::run_context& context) {
   auto m = sph::make_app_control_model<rayleigh_taylor_run>(
     {[](rayleigh_taylor_run& state) { rayleigh_taylor::set_domain(state, state.problem); },
      [](rayleigh_taylor_run& state) { rayleigh_taylor::create_particles(state, state.problem); }});
-  const auto start = m.action("force_evaluation", "hydrostatic_start", [](rayleigh_taylor_run& state) {
-                        rayleigh_taylor::start_hydrostatic<2>(state, state.problem);
-                      }).after("density");
-  m.depends(m.find("force_evaluation", "equation_of_state"), start);
   m.action("force_evaluation", "uniform_gravity", [](rayleigh_taylor_run& state) {
      rayleigh_taylor::apply_uniform_gravity<2>(state, {0.0, -state.problem.gravity});
    }).after("forces");

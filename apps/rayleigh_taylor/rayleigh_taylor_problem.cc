@@ -2,6 +2,8 @@
 // equal-mass particles with their walls (rayleigh_taylor_problem.hh).
 #include "rayleigh_taylor_problem.hh"
 
+#include "discrete_equilibrium.hh"
+
 #include <algorithm>
 #include <string>
 
@@ -27,6 +29,9 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
     .greater_than(0)
     .at_most(0.1);
   keys.real("perturbation", &problem::perturbation, "delta: the largest v_y of the seed");
+  keys.real("lattice_density", &problem::lattice_density,
+            "density at which the rows are as far apart as their particles (0: rho1)")
+    .at_least(0);
   keys.integer("wall_layers", &problem::wall_layers, "rows of fixed wall particles at each end (0: the kernel's reach)")
     .at_least(0);
   return keys;
@@ -51,6 +56,9 @@ double height_of_mass(double mass, const problem& p) {
   }
   return 0.5 * (low + high);
 }
+
+/// The density at which the rows' lattice is isotropic.
+double lattice_density(const problem& p) { return p.lattice_density > 0 ? p.lattice_density : p.rho1; }
 
 /// Wall rows: a fluid particle next to a wall reaches 2 (1 + margin) h of walls, and those walls
 /// need as deep a layer behind them for a complete density sum (as apps/sod).
@@ -86,43 +94,27 @@ double particle_mass(const problem& p, const sph::physics_settings& physics) {
 }
 
 std::vector<row> particle_rows(const problem& p, const sph::physics_settings& physics) {
-  // First the counts: at each row's start the spacing sqrt(m / rho) of the local density.
+  // One count per row (discrete_equilibrium.hh), isotropic at the geometric mean of the densities:
+  // the rows' spacing follows the density (dy / dx = sqrt(rho1 rho2) / rho), each row at the
+  // middle (in mass) of its band, alternate rows shifted by half a spacing.
   const double trial_mass = p.rho1 / double(p.per_side * p.per_side);
   const double total = column_mass(p.height, p) - column_mass(0, p);  // per unit width
-  const auto count_at = [&](double y) {
-    return std::max<std::int64_t>(1, std::llround(p.width / std::sqrt(trial_mass / density(y, p))));
-  };
-  std::vector<std::int64_t> counts;
-  for (double mass = 0, y = 0;;) {
-    const auto count = count_at(y);
-    const double band = double(count) * trial_mass / p.width;
-    if (total - mass < 0.5 * band) break;
-    counts.push_back(count);
-    mass += band;
-    y = height_of_mass(mass, p);
-  }
-  // Then the mass per particle that fills the box exactly with those counts, and each row at the
-  // middle (in mass) of its band; the walls continue the end rows' spacing and alternation.
-  std::int64_t particles = 0;
-  for (const auto count : counts) particles += count;
-  const double mass = p.width * total / double(particles);
+  const auto count =
+    std::max<std::int64_t>(1, std::llround(p.width / std::sqrt(trial_mass / lattice_density(p))));
+  const auto fluid_rows = std::max<std::int64_t>(2, std::llround(p.width * total / (double(count) * trial_mass)));
+  const double band = total / double(fluid_rows);
   std::vector<row> fluid;
-  double below = 0;
-  for (std::size_t r = 0; r < counts.size(); ++r) {
-    const double band = double(counts[r]) * mass / p.width;
-    fluid.push_back({height_of_mass(below + 0.5 * band, p), counts[r], r % 2 ? 0.5 : 0.0, false});
-    below += band;
-  }
+  for (std::int64_t r = 0; r < fluid_rows; ++r)
+    fluid.push_back({height_of_mass((double(r) + 0.5) * band, p), count, r % 2 ? 0.5 : 0.0, false});
+  // The walls continue the end rows' spacing and alternation.
   const std::int64_t layers = wall_rows(p, physics);
-  const auto spacing = [&](const row& r) { return double(r.count) * mass / (p.width * density(r.y, p)); };
-  const row bottom = fluid.front(), top = fluid.back();
+  const double below = fluid[1].y - fluid[0].y, above = fluid[fluid.size() - 1].y - fluid[fluid.size() - 2].y;
   std::vector<row> rows;
   for (std::int64_t j = layers; j >= 1; --j)
-    rows.push_back({bottom.y - double(j) * spacing(bottom), bottom.count, j % 2 ? 0.5 : 0.0, true});
+    rows.push_back({fluid.front().y - double(j) * below, count, j % 2 ? 0.5 : 0.0, true});
   rows.insert(rows.end(), fluid.begin(), fluid.end());
   for (std::int64_t j = 1; j <= layers; ++j)
-    rows.push_back({top.y + double(j) * spacing(top), top.count, (std::int64_t(fluid.size()) - 1 + j) % 2 ? 0.5 : 0.0,
-                    true});
+    rows.push_back({fluid.back().y + double(j) * above, count, (fluid_rows - 1 + j) % 2 ? 0.5 : 0.0, true});
   return rows;
 }
 
@@ -137,6 +129,33 @@ void set_domain(sph::simulation<2>& s, const problem& p) {
   s.tree_settings.periodic = {true, false};
 }
 
+void create_particles(sph::simulation<2>& s, const problem& problem) {
+  set_domain(s, problem);
+  const auto rows = particle_rows(problem, s.physics);
+  std::vector<std::int64_t> first(rows.size() + 1, 0);
+  for (std::size_t r = 0; r < rows.size(); ++r) first[r + 1] = first[r] + rows[r].count;
+  const auto total = static_cast<std::uint64_t>(first.back());
+  const auto block = flecsi_lite::io::block_slice(total, flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
+  sph::create_particles(s, block.count);
+  const double mass = particle_mass(problem, s.physics);
+  const auto states = discrete_equilibrium(rows, mass, problem, s.physics);
+  std::size_t r = 0;
+  sph::initial_fields(s, [&](std::size_t i, sph::initial_particle<2>& p) {
+    const auto index = static_cast<std::int64_t>(block.offset + i);
+    while (first[r + 1] <= index) ++r;  // particles come in order of index
+    const row& here = rows[r];
+    const double x = (double(index - first[r]) + 0.5 + here.shift) / double(here.count);
+    p.id = static_cast<std::uint64_t>(index);
+    p.x = {problem.width * (x - std::floor(x)), here.y};
+    p.v = here.wall ? sph::vector<2>{0.0, 0.0} : seed_velocity(p.x[0], p.x[1], problem);
+    p.m = mass;
+    p.h = states[r].h;
+    p.kind = here.wall ? sph::particle_kind::wall : sph::particle_kind::fluid;
+    p.rho = states[r].rho;
+    p.u = s.physics.eos.ideal.internal_energy(states[r].rho, states[r].pressure);
+  });
+}
+
 void check_problem(const problem& p, const sph::physics_settings& physics) {
   const double densest = std::max(p.rho1, p.rho2), thinnest = std::min(p.rho1, p.rho2);
   checked_count("rayleigh_taylor", "particles",
@@ -146,6 +165,8 @@ void check_problem(const problem& p, const sph::physics_settings& physics) {
                  physics.eta / double(p.per_side) * std::sqrt(p.rho1 / densest), "eta, " + problem_keys);
   checked_length("rayleigh_taylor", "largest spacing", std::sqrt(p.rho1 / thinnest) / double(p.per_side),
                  problem_keys);
+  checked_count("rayleigh_taylor", "particles per row",
+                p.width * double(p.per_side) * std::sqrt(std::sqrt(p.rho1 * p.rho2) / p.rho1), problem_keys);
   checked_count("rayleigh_taylor", "wall layers", double(wall_rows(p, physics)), "wall_layers, eta, search_margin");
   // The lowest pressure is that of the top wall row: every internal energy is then positive.
   const auto rows = particle_rows(p, physics);

@@ -8,7 +8,8 @@
 // Delta^2)): v_y = delta cos(k x) f, v_x = -(delta / k) sin(k x) f' (the sharp interface's
 // eigenfunction exp(-k |e|), Chandrasekhar 1961, ch. X, smoothed over Delta). Walls: rows of fixed
 // particles below y = 0 and above y = H that continue the lattice and the hydrostatic pressure.
-// Equal-mass particles in rows of the profile's own density (as apps/kelvin_helmholtz).
+// Equal-mass particles in rows of one count whose spacing follows the profile's density, started in
+// the SPH equations' own equilibrium (discrete_equilibrium.hh).
 #pragma once
 
 #include "specialization/sph.hh"
@@ -32,6 +33,7 @@ struct problem {
   double pressure = 2.5;       ///< P0 at the interface
   double smoothing = 0.025;    ///< Delta of the logistic profile
   double perturbation = 0.01;  ///< delta: the seed's largest v_y
+  double lattice_density = 0;  ///< where the rows are as far apart as their particles; 0: rho1
   std::int64_t wall_layers = 0;  ///< rows of wall particles at each end; 0: the kernel's reach
 };
 
@@ -68,33 +70,9 @@ std::vector<row> particle_rows(const problem& problem, const sph::physics_settin
 /// The box periodic in x; along y it holds the walls with room to spare (keys only).
 void set_domain(sph::simulation<2>& s, const problem& problem);
 
-/// Fills this rank's block of the particles (row by row): equal masses, h = eta sqrt(m / rho(y)),
-/// u = P(y) / ((gamma - 1) rho(y)), the seed's velocity on the fluid, walls at rest. Collective.
-inline void create_particles(sph::simulation<2>& s, const problem& problem) {
-  set_domain(s, problem);
-  const auto rows = particle_rows(problem, s.physics);
-  std::vector<std::int64_t> first(rows.size() + 1, 0);
-  for (std::size_t r = 0; r < rows.size(); ++r) first[r + 1] = first[r] + rows[r].count;
-  const auto total = static_cast<std::uint64_t>(first.back());
-  const auto block = flecsi_lite::io::block_slice(total, flecsi_lite::runtime::rank(), flecsi_lite::runtime::size());
-  sph::create_particles(s, block.count);
-  const double mass = particle_mass(problem, s.physics);
-  std::size_t r = 0;
-  sph::initial_fields(s, [&](std::size_t i, sph::initial_particle<2>& p) {
-    const auto index = static_cast<std::int64_t>(block.offset + i);
-    while (first[r + 1] <= index) ++r;  // particles come in order of index
-    const row& here = rows[r];
-    const double x = (double(index - first[r]) + 0.5 + here.shift) / double(here.count);
-    const double rho = density(here.y, problem);
-    p.id = static_cast<std::uint64_t>(index);
-    p.x = {problem.width * (x - std::floor(x)), here.y};
-    p.v = here.wall ? sph::vector<2>{0.0, 0.0} : seed_velocity(p.x[0], p.x[1], problem);
-    p.m = mass;
-    p.h = s.physics.eta * std::sqrt(mass / rho);
-    p.kind = here.wall ? sph::particle_kind::wall : sph::particle_kind::fluid;
-    p.rho = rho;
-    p.u = s.physics.eos.ideal.internal_energy(rho, hydrostatic_pressure(here.y, problem));
-  });
-}
+/// Fills this rank's block of the particles (row by row): equal masses, each row's h, rho and u =
+/// P / ((gamma - 1) rho) of the discrete equilibrium (discrete_equilibrium.hh), the seed's velocity
+/// on the fluid, walls at rest. Collective.
+void create_particles(sph::simulation<2>& s, const problem& problem);
 
 }  // namespace rayleigh_taylor
