@@ -94,9 +94,10 @@ double particle_mass(const problem& p, const sph::physics_settings& physics) {
 }
 
 std::vector<row> particle_rows(const problem& p, const sph::physics_settings& physics) {
-  // One count per row (discrete_equilibrium.hh), isotropic at the geometric mean of the densities:
-  // the rows' spacing follows the density (dy / dx = sqrt(rho1 rho2) / rho), each row at the
-  // middle (in mass) of its band, alternate rows shifted by half a spacing.
+  // One count per row (discrete_equilibrium.hh), isotropic at lattice_density (rho1 by default:
+  // rows isotropic at sqrt(rho1 rho2) left the bottom rows 1.4 spacings apart, which went unstable):
+  // the rows' spacing follows the density (dy / dx = lattice_density / rho), each row at the middle
+  // (in mass) of its band, alternate rows shifted by half a spacing.
   const double trial_mass = p.rho1 / double(p.per_side * p.per_side);
   const double total = column_mass(p.height, p) - column_mass(0, p);  // per unit width
   const auto count =
