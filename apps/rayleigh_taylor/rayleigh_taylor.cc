@@ -34,15 +34,22 @@ int run(const app::run_context& context) {
   rayleigh_taylor::check_problem(s.problem, s.physics);
   // The set-up as root attributes: the growth-rate check computes its linear theory from them.
   const auto& p = s.problem;
-  s.description = {{"width", p.width},     {"height", p.height},       {"rho1", p.rho1},
-                   {"rho2", p.rho2},       {"uniform_gravity", p.gravity},     {"pressure", p.pressure},
-                   {"smoothing", p.smoothing}, {"perturbation", p.perturbation}};
+  s.description = {{"width", p.width},
+                   {"height", p.height},
+                   {"rho1", p.rho1},
+                   {"rho2", p.rho2},
+                   {"uniform_gravity", p.gravity},
+                   {"pressure", p.pressure},
+                   {"smoothing", p.smoothing},
+                   {"perturbation", p.perturbation}};
   auto m = sph::make_app_control_model<rayleigh_taylor_run>(
     {[](rayleigh_taylor_run& state) { rayleigh_taylor::set_domain(state, state.problem); },
      [](rayleigh_taylor_run& state) { rayleigh_taylor::create_particles(state, state.problem); }});
-  m.action("force_evaluation", "uniform_gravity", [](rayleigh_taylor_run& state) {
-     rayleigh_taylor::apply_uniform_gravity<2>(state, {0.0, -state.problem.gravity});
-   }).after("forces");
+  m.action("force_evaluation", "uniform_gravity",
+           [](rayleigh_taylor_run& state) {
+             rayleigh_taylor::apply_uniform_gravity<2>(state, {0.0, -state.problem.gravity});
+           })
+    .after("forces");
   return context.execute(m, s, [](const rayleigh_taylor_run&) { return 0; });
 }
 }  // namespace

@@ -25,12 +25,11 @@ flecsi_lite::runtime::parameter_block<problem> declare_problem() {
   keys.real("rho2", &problem::rho2, "density above the interface").greater_than(0);
   keys.real("uniform_gravity", &problem::gravity, "g: the uniform acceleration is -g along y");
   keys.real("pressure", &problem::pressure, "P0: the pressure at the interface").greater_than(0);
-  keys.real("smoothing", &problem::smoothing, "Delta of the logistic density profile")
-    .greater_than(0)
-    .at_most(0.1);
+  keys.real("smoothing", &problem::smoothing, "Delta of the logistic density profile").greater_than(0).at_most(0.1);
   keys.real("perturbation", &problem::perturbation, "delta: the largest v_y of the seed");
-  keys.real("lattice_density", &problem::lattice_density,
-            "density at which the rows are as far apart as their particles (0: rho1)")
+  keys
+    .real("lattice_density", &problem::lattice_density,
+          "density at which the rows are as far apart as their particles (0: rho1)")
     .at_least(0);
   keys.integer("wall_layers", &problem::wall_layers, "rows of fixed wall particles at each end (0: the kernel's reach)")
     .at_least(0);
@@ -100,8 +99,7 @@ std::vector<row> particle_rows(const problem& p, const sph::physics_settings& ph
   // (in mass) of its band, alternate rows shifted by half a spacing.
   const double trial_mass = p.rho1 / double(p.per_side * p.per_side);
   const double total = column_mass(p.height, p) - column_mass(0, p);  // per unit width
-  const auto count =
-    std::max<std::int64_t>(1, std::llround(p.width / std::sqrt(trial_mass / lattice_density(p))));
+  const auto count = std::max<std::int64_t>(1, std::llround(p.width / std::sqrt(trial_mass / lattice_density(p))));
   const auto fluid_rows = std::max<std::int64_t>(2, std::llround(p.width * total / (double(count) * trial_mass)));
   const double band = total / double(fluid_rows);
   std::vector<row> fluid;
@@ -162,10 +160,9 @@ void check_problem(const problem& p, const sph::physics_settings& physics) {
   checked_count("rayleigh_taylor", "particles",
                 double(p.per_side) * double(p.per_side) * p.width * (p.height + 1) * densest / p.rho1 * 1.5,
                 problem_keys);
-  checked_length("rayleigh_taylor", "smoothing length",
-                 physics.eta / double(p.per_side) * std::sqrt(p.rho1 / densest), "eta, " + problem_keys);
-  checked_length("rayleigh_taylor", "largest spacing", std::sqrt(p.rho1 / thinnest) / double(p.per_side),
-                 problem_keys);
+  checked_length("rayleigh_taylor", "smoothing length", physics.eta / double(p.per_side) * std::sqrt(p.rho1 / densest),
+                 "eta, " + problem_keys);
+  checked_length("rayleigh_taylor", "largest spacing", std::sqrt(p.rho1 / thinnest) / double(p.per_side), problem_keys);
   checked_count("rayleigh_taylor", "particles per row",
                 p.width * double(p.per_side) * std::sqrt(std::sqrt(p.rho1 * p.rho2) / p.rho1), problem_keys);
   checked_count("rayleigh_taylor", "wall layers", double(wall_rows(p, physics)), "wall_layers, eta, search_margin");

@@ -25,15 +25,15 @@ namespace rayleigh_taylor {
 namespace sph = flecsph::sph;
 
 struct problem {
-  std::int64_t per_side = 64;  ///< particles per unit length where rho = rho1 (m = rho1 / n^2)
-  double width = 0.5;          ///< W: the period along x, also the wavelength of the seed
-  double height = 1.0;         ///< H: the walls' distance
-  double rho1 = 1, rho2 = 2;   ///< bottom and top densities
-  double gravity = 0.5;        ///< g: the acceleration is -g along y
-  double pressure = 2.5;       ///< P0 at the interface
-  double smoothing = 0.025;    ///< Delta of the logistic profile
-  double perturbation = 0.01;  ///< delta: the seed's largest v_y
-  double lattice_density = 0;  ///< where the rows are as far apart as their particles; 0: rho1
+  std::int64_t per_side = 64;    ///< particles per unit length where rho = rho1 (m = rho1 / n^2)
+  double width = 0.5;            ///< W: the period along x, also the wavelength of the seed
+  double height = 1.0;           ///< H: the walls' distance
+  double rho1 = 1, rho2 = 2;     ///< bottom and top densities
+  double gravity = 0.5;          ///< g: the acceleration is -g along y
+  double pressure = 2.5;         ///< P0 at the interface
+  double smoothing = 0.025;      ///< Delta of the logistic profile
+  double perturbation = 0.01;    ///< delta: the seed's largest v_y
+  double lattice_density = 0;    ///< where the rows are as far apart as their particles; 0: rho1
   std::int64_t wall_layers = 0;  ///< rows of wall particles at each end; 0: the kernel's reach
 };
 

@@ -27,7 +27,7 @@ class exact_sum {
     std::memcpy(&bits, &x, sizeof bits);
     const int biased_exponent = static_cast<int>((bits >> 52) & 0x7ff);
     std::uint64_t mantissa = bits & ((std::uint64_t(1) << 52) - 1);
-    int position = 0;  // bit position of the mantissa's lowest bit
+    int position = 0;            // bit position of the mantissa's lowest bit
     if (biased_exponent != 0) {  // normal: the implicit leading bit
       mantissa |= std::uint64_t(1) << 52;
       position = biased_exponent - 1;
