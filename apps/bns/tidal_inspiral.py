@@ -34,8 +34,10 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "validation"))
-from check_peters_inspiral import attribute, read_statistics, separations  # noqa: E402
+from check_peters_inspiral import (after_release, attribute, peters_rate, peters_separation,  # noqa: E402
+                                   read_statistics, separations)
 
+PROGRAM = "tidal_inspiral"
 N1_POLYTROPE_K2 = (15 - math.pi**2) / (2 * math.pi**2)
 
 
@@ -77,20 +79,15 @@ def main():
     args = parser.parse_args()
 
     times, distances, attributes = separations(args.h5part)
-    G = attribute(attributes, "gravitational_constant")
-    c = attribute(attributes, "speed_of_light")
-    m1, m2 = attribute(attributes, "star_mass"), attribute(attributes, "companion_mass")
-    radius = attribute(attributes, "star_radius")
+    G = attribute(attributes, "gravitational_constant", PROGRAM)
+    c = attribute(attributes, "speed_of_light", PROGRAM)
+    m1, m2 = attribute(attributes, "star_mass", PROGRAM), attribute(attributes, "companion_mass", PROGRAM)
+    radius = attribute(attributes, "star_radius", PROGRAM)
     if abs(m1 / m2 - 1) > 1e-12:
-        sys.exit(f"tidal_inspiral: the model is for equal masses (star_mass {m1}, companion_mass {m2})")
-    rows = read_statistics(args.statistics)
-    released = rows["relaxing"] == 0
-    if not released.any():
-        sys.exit("tidal_inspiral: the statistics rows never leave the relaxation")
-    after = times >= rows["time"][np.argmax(released)]
-    t, a = times[after], distances[after]
-    rate = 256.0 / 5.0 * G**3 * m1 * m2 * (m1 + m2) / c**5
-    peters = np.maximum(a[0] ** 4 - rate * (t - t[0]), 0.0) ** 0.25
+        sys.exit(f"{PROGRAM}: the model is for equal masses (star_mass {m1}, companion_mass {m2})")
+    _, t, a = after_release(times, distances, read_statistics(args.statistics), PROGRAM)
+    rate = peters_rate(G, c, m1, m2)
+    peters = peters_separation(t, a[0], rate)
     tidal, tidal_contact = tidal_separation(t, a[0], G, c, m1, radius, args.k2)
     # The integrator checked on the case with a closed form: without tides the model is Peters.
     untidal, _ = tidal_separation(t, a[0], G, c, m1, radius, 0.0)
@@ -98,7 +95,7 @@ def main():
     integrator_error = float(np.max(np.abs(untidal[finite] / peters[finite] - 1)))
     print(f"integrator check: the model with k2 = 0 against Peters' closed form: {integrator_error:.2e}")
     if integrator_error > 1e-6:
-        sys.exit(f"tidal_inspiral: the k2 = 0 model departs from Peters by {integrator_error:.2e} > 1e-6")
+        sys.exit(f"{PROGRAM}: the k2 = 0 model departs from Peters by {integrator_error:.2e} > 1e-6")
 
     print(f"k2 = {args.k2:.4f}; from t0 = {t[0]:.6g}, a0 = {a[0] / radius:.4f} R")
     print("a > (R) | to t    | largest |a/a_Peters - 1| | largest |a/a_tidal - 1|")

@@ -60,10 +60,33 @@ def separations(path):
     return np.array(times), np.array(distances), attributes
 
 
-def attribute(attributes, name):
+def attribute(attributes, name, program="check_peters_inspiral"):
     if name not in attributes:
-        sys.exit(f"check_peters_inspiral: the output has no root attribute '{name}' (run with radiation_reaction = true)")
+        sys.exit(f"{program}: the output has no root attribute '{name}' (run with radiation_reaction = true)")
     return float(np.ravel(attributes[name])[0])
+
+
+def after_release(times, distances, rows, program="check_peters_inspiral"):
+    """The release time (the first statistics row with relaxing = 0) and (t, a) of the output steps
+    from it on."""
+    released = rows["relaxing"] == 0
+    if not released.any():
+        sys.exit(f"{program}: the statistics rows never leave the relaxation")
+    release = rows["time"][np.argmax(released)]
+    after = times >= release
+    if np.count_nonzero(after) < 3:
+        sys.exit(f"{program}: fewer than 3 output steps after the release at t = {release}")
+    return release, times[after], distances[after]
+
+
+def peters_rate(G, c, m1, m2):
+    """-d(a^4)/dt of a circular point-mass inspiral (Peters 1964)."""
+    return 256.0 / 5.0 * G**3 * m1 * m2 * (m1 + m2) / c**5
+
+
+def peters_separation(t, a0, rate):
+    """Peters' a(t) from a0 at t[0], zero after coalescence."""
+    return np.maximum(a0**4 - rate * (t - t[0]), 0.0) ** 0.25
 
 
 def main():
@@ -84,15 +107,9 @@ def main():
     radius = attribute(attributes, "star_radius")
     rows = read_statistics(args.statistics)
     released = rows["relaxing"] == 0
-    if not released.any():
-        sys.exit("check_peters_inspiral: the statistics rows never leave the relaxation")
-    release = rows["time"][np.argmax(released)]
-    after = times >= release
-    if np.count_nonzero(after) < 3:
-        sys.exit(f"check_peters_inspiral: fewer than 3 output steps after the release at t = {release}")
-    t, a = times[after], distances[after]
-    rate = 256.0 / 5.0 * G**3 * m1 * m2 * (m1 + m2) / c**5
-    peters = np.maximum(a[0] ** 4 - rate * (t - t[0]), 0.0) ** 0.25
+    release, t, a = after_release(times, distances, rows)
+    rate = peters_rate(G, c, m1, m2)
+    peters = peters_separation(t, a[0], rate)
     compared = a > args.until * radius
     errors = np.abs(a[compared] / peters[compared] - 1)
     failures = []
