@@ -10,17 +10,18 @@
 #pragma once
 
 /// The physics steps of driver.hh's control model (steps.hh, diagnostics.hh, time_bins.hh).
-#define FLECSPH_SPH_STEP_INSTANCES(EXTERN, D)                      \
-  EXTERN template void update_neighbours<D>(simulation<D>&, bool); \
-  EXTERN template void update_density<D>(simulation<D>&);          \
-  EXTERN template void update_pressure<D>(simulation<D>&);         \
-  EXTERN template void update_forces<D>(simulation<D>&);           \
-  EXTERN template void first_kick_and_drift<D>(simulation<D>&);    \
-  EXTERN template void second_kick<D>(simulation<D>&);             \
-  EXTERN template void choose_time_step<D>(simulation<D>&, bool);  \
-  EXTERN template void start_timeline<D>(simulation<D>&);          \
-  EXTERN template void conserved_diagnostics<D>(simulation<D>&);   \
-  EXTERN template void progress_line<D>(simulation<D>&);           \
+#define FLECSPH_SPH_STEP_INSTANCES(EXTERN, D)                            \
+  EXTERN template void update_neighbours<D>(simulation<D>&, bool);       \
+  EXTERN template void update_density<D>(simulation<D>&);                \
+  EXTERN template void update_pressure<D>(simulation<D>&);               \
+  EXTERN template void update_forces<D>(simulation<D>&);                 \
+  EXTERN template void first_kick_and_drift<D>(simulation<D>&);          \
+  EXTERN template void second_kick<D>(simulation<D>&);                   \
+  EXTERN template void choose_time_step<D>(simulation<D>&, bool);        \
+  EXTERN template void start_timeline<D>(simulation<D>&);                \
+  EXTERN template void update_viscosity_switch<D>(simulation<D>&, bool); \
+  EXTERN template void conserved_diagnostics<D>(simulation<D>&);         \
+  EXTERN template void progress_line<D>(simulation<D>&);                 \
   EXTERN template void run_summary<D>(simulation<D>&);
 
 /// The app frame of run/app.hh: configuration, initial data, self-gravity, output and checkpoints.

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 namespace flecsph::sph {
@@ -115,9 +116,26 @@ struct simulation {
   double woken = 0;             ///< particles the limiter woke
 
   // Between the actions of one step.
+  /// Work a step left undone until every particle's values are read (gravity.hh: with individual
+  /// time steps, the walk of the groups without active particles, whose potential only the
+  /// totals and the files read); complete_deferred_fields(s) runs it once. Void after the drift.
+  std::function<void()> deferred_fields;
+  bool deferred_fields_read = false;  ///< this step's deferred work was run (was needed)
+  int deferred_reads_in_a_row = 0;    ///< steps in a row whose deferred work was needed
   flecsi_lite::future<double> next_time_step;
   flecsi_lite::future<active_count> active_targets;  ///< individual time steps
   flecsi_lite::future<double> kicked;
 };
+
+/// Runs the work a step deferred (simulation::deferred_fields), before a reader of every particle's
+/// values: the conserved totals, the output and the checkpoints. Collective where that work is.
+template<int D>
+void complete_deferred_fields(simulation<D>& s) {
+  if (!s.deferred_fields) return;
+  const std::function<void()> work = std::move(s.deferred_fields);
+  s.deferred_fields = nullptr;
+  s.deferred_fields_read = true;
+  work();
+}
 
 }  // namespace flecsph::sph

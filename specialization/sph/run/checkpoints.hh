@@ -28,6 +28,7 @@ void checkpoint(app_state<D>& s) {
     line << "no checkpoint (checkpoint_file = none): this run cannot be resumed";
     return;
   }
+  complete_deferred_fields(s);  // every particle's phi (gravity.hh)
   write_restart_checkpoint(s, path,
                            {{"program", s.program},
                             {"parameters", s.parameters_text},

@@ -24,6 +24,7 @@ template<int D>
 void write_output_step(app_state<D>& s) {
   s.output_due = s.time >= s.next_output;
   if (!s.output_due && !s.finished) return;
+  complete_deferred_fields(s);  // every particle's phi (gravity.hh)
   if (s.writer) write_particles(*s.writer, s);
   if (s.snapshots) s.snapshots->write(s);
   if (s.output_due) s.next_output = s.files.output_every > 0 ? s.time + s.files.output_every : s.run.end_time;

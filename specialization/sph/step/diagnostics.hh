@@ -19,11 +19,13 @@
 
 namespace flecsph::sph {
 
-/// The exact totals now (collective; waits for the launches they depend on).
+/// The exact totals now (collective; waits for the launches they depend on; runs the deferred walk
+/// of the inactive particles' gravity first, complete_deferred_fields).
 template<int D>
 conserved_totals<D> measure_conserved(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
+  complete_deferred_fields(s);
   if (s.physics.gravity.enabled)
     return flecsi_lite::reduce<conserved_quantities_with_gravity<D>, conserved_reduction>(
              f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p), f::boundary_impulse(p),

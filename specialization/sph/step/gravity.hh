@@ -24,6 +24,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -44,17 +46,51 @@ struct softened_pair_field {
 };
 
 namespace detail {
-/// Stores the tree's results (G = 1) scaled by G in the fields.
+/// Stores the tree's results (G = 1) scaled by G in the fields: of every particle, or of those
+/// `stored` marks (when given).
 template<int D>
 void store_gravity(double G, const std::vector<vector<D>>& acceleration, const std::vector<double>& potential,
-                   wo<vector<D>> gravity_acceleration, wo<double> gravitational_potential) {
+                   const std::vector<std::uint8_t>& stored, rw<vector<D>> gravity_acceleration,
+                   rw<double> gravitational_potential) {
   flecsi_lite::forall(
     gravity_acceleration.size(),
     [&](std::size_t a) {
+      if (!stored.empty() && !stored[a]) return;
       for (int k = 0; k < D; ++k) gravity_acceleration(a)[k] = G * acceleration[a][k];
       gravitational_potential(a) = G * potential[a];
     },
     "sph::store_gravity");
+}
+
+/// The walk of the groups holding a particle `wanted` marks (empty: all), stored for those
+/// particles; returns the interactions evaluated.
+template<int D>
+gravity_record walk_gravity(simulation<D>& s, const tree::gravity_tree<D>& gravity, std::vector<std::uint8_t> wanted) {
+  using f = fields<D>;
+  auto& p = *s.particles;
+  const std::size_t n = p.owned_size();
+  std::vector<vector<D>> acceleration(n);
+  std::vector<double> potential(n);
+  const tree::gravity_counts counts = physics::dispatch_kernel<D>(s.physics.kernel, [&](auto kernel) {
+    using shape = typename decltype(kernel)::shape;
+    return gravity.evaluate(softened_pair_field<shape>{}, acceleration.data(), potential.data(),
+                            wanted.empty() ? nullptr : wanted.data());
+  });
+  flecsi_lite::execute<store_gravity<D>>(s.physics.gravity.constant, std::move(acceleration), std::move(potential),
+                                         std::move(wanted), f::gravity_acceleration(p), f::gravitational_potential(p));
+  return {counts.node_interactions, counts.particle_interactions, gravity.imported_nodes(),
+          gravity.imported_particles()};
+}
+
+/// With individual time steps, which owned particles are active (their step ends at the clock's
+/// next tick; walls always); empty when every particle is.
+template<int D>
+std::vector<std::uint8_t> active_particles(simulation<D>& s) {
+  if (!s.physics.individual_time_steps() || s.initializing) return {};
+  const auto step_end = flecsi_lite::host_view(fields<D>::step_end(*s.particles));
+  std::vector<std::uint8_t> active(s.particles->owned_size());
+  for (std::size_t a = 0; a < active.size(); ++a) active[a] = step_end(a) == s.clock.next;
+  return active;
 }
 }  // namespace detail
 
@@ -63,14 +99,20 @@ void store_gravity(double G, const std::vector<vector<D>>& acceleration, const s
 /// The relative criterion compares with the previous step's total |a| (field acceleration, zero
 /// at the start: theta alone decides then). The ranks' owned particles are in the (key, id) order
 /// of the last distribution (the ntree's key field), so the tree, hence every sum, is the same on
-/// any number of ranks. With individual time steps too every particle is evaluated in every
-/// system step: the forces use the active particles' values only, but the potential energy needs
-/// every particle's potential at the same time (with the inactive ones' from their last active
-/// step the Evrard collapse's energy seemed off by 2.1e-2 in mid-collapse, against 1.9e-3).
-/// Does nothing with gravity off.
+/// any number of ranks.
+///
+/// With individual time steps the forces read the active particles' values only: the walk covers
+/// the target groups holding an active particle, and the other groups' walk is deferred
+/// (s.deferred_fields, on the same tree) until the potential energy or the files read every
+/// particle's phi. Each particle's values are those of the whole walk, to the bit, whenever they
+/// are read (the inactive ones' from their last active step made the Evrard collapse's energy
+/// seem off by 2.1e-2 in mid-collapse, against 1.9e-3). When the previous step's deferred walk
+/// was needed two steps in a row (totals every step) it walks every group at once: the same bits.
+/// last_gravity counts the interactions evaluated in the step. Does nothing with gravity off.
 template<int D>
 gravity_record update_gravity(simulation<D>& s) {
   gravity_record record;
+  s.deferred_fields = nullptr;  // made for positions the drift has since moved
   if (!s.physics.gravity.enabled) return record;
   if constexpr (D == 3) {
     using f = fields<D>;
@@ -97,19 +139,28 @@ gravity_record update_gravity(simulation<D>& s) {
         previous[a] = std::sqrt(a2) / settings.constant;
       }
     }
-    tree::gravity_tree<D> gravity;
-    gravity.build(keys.data(), x.data(), m.data(), h.data(), previous.empty() ? nullptr : previous.data(), n, options,
-                  flecsi_lite::runtime::communicator());
-    std::vector<vector<D>> acceleration(n);
-    std::vector<double> potential(n);
-    const tree::gravity_counts counts = physics::dispatch_kernel<D>(s.physics.kernel, [&](auto kernel) {
-      using shape = typename decltype(kernel)::shape;
-      return gravity.evaluate(softened_pair_field<shape>{}, acceleration.data(), potential.data());
-    });
-    record = {counts.node_interactions, counts.particle_interactions, gravity.imported_nodes(),
-              gravity.imported_particles()};
-    flecsi_lite::execute<detail::store_gravity<D>>(settings.constant, std::move(acceleration), std::move(potential),
-                                                   f::gravity_acceleration(p), f::gravitational_potential(p));
+    auto gravity = std::make_shared<tree::gravity_tree<D>>();
+    gravity->build(keys.data(), x.data(), m.data(), h.data(), previous.empty() ? nullptr : previous.data(), n, options,
+                   flecsi_lite::runtime::communicator());
+    std::vector<std::uint8_t> active = detail::active_particles(s);
+    if (active.empty()) return detail::walk_gravity(s, *gravity, {});
+    // Where the totals are read every step (the default statistics rows), deferring only costs
+    // the groups that hold both kinds twice: after two such steps every group is walked at once,
+    // and an empty deferred work keeps noting whether the next step's is read.
+    s.deferred_reads_in_a_row = std::exchange(s.deferred_fields_read, false) ? s.deferred_reads_in_a_row + 1 : 0;
+    if (s.deferred_reads_in_a_row >= 2) {
+      s.deferred_fields = [] {};
+      return detail::walk_gravity(s, *gravity, {});
+    }
+    std::vector<std::uint8_t> inactive(active.size());
+    for (std::size_t a = 0; a < active.size(); ++a) inactive[a] = !active[a];
+    record = detail::walk_gravity(s, *gravity, std::move(active));
+    s.deferred_fields = [&s, gravity, inactive = std::move(inactive)] {
+      flecsi_lite::timers::scoped deferred_timer("sph::gravity");
+      const gravity_record rest = detail::walk_gravity(s, *gravity, inactive);
+      s.last_gravity.node_interactions += rest.node_interactions;
+      s.last_gravity.particle_interactions += rest.particle_interactions;
+    };
   }
   return record;
 }

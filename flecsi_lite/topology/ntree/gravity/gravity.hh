@@ -109,11 +109,16 @@ std::vector<target_group<D>> target_groups(const hashed_tree<D>& tree, std::size
   return groups;
 }
 
-/// Where the field is wanted: positions and softening lengths (nullptr: all zero).
+/// Where the field is wanted: positions and softening lengths (nullptr: all zero). `wanted`
+/// (nullable: every target) marks the targets whose field is asked for: a group with none of them
+/// is not walked and its targets' results are left as they were; the others' are those of the
+/// whole walk, to the bit (a group's sums depend on its own targets and the tree only). With
+/// individual time steps this walks only the groups of the active particles.
 template<int D>
 struct gravity_targets {
   const point<D>* x = nullptr;
   const double* h = nullptr;
+  const std::uint8_t* wanted = nullptr;
 };
 
 /// What the near-field function returns for a pair at distance r: source j adds
@@ -130,7 +135,8 @@ struct gravity_counts {
   std::uint64_t particle_interactions = 0;
 };
 
-/// Accelerations and potentials (G = 1) of every target of `groups`.
+/// Accelerations and potentials (G = 1) of every target of `groups` (of the groups holding a
+/// wanted target, when targets.wanted is given).
 ///
 /// near(r, h_target, h_source) -> softened_pair must equal the Newtonian pair beyond
 /// near_factor * max(h_target, h_source) and give radial = 0 at r = 0 (a target meets itself in
@@ -162,6 +168,9 @@ gravity_counts gravity_walk(const gravity_sources<D>& sources, const std::vector
       thread_local detail::gravity_list<D> list;
       thread_local detail::target_block<D> block;
       const target_group<D>& group = groups[g];
+      if (targets.wanted && std::none_of(targets.wanted + group.begin, targets.wanted + group.end,
+                                         [](std::uint8_t wanted) { return wanted != 0; }))
+        return;
       detail::build_gravity_list<D>(sources, group, options, quadrupoles, list);
       constexpr std::uint32_t width = detail::target_block<D>::width;
       for (std::uint32_t first = group.begin; first < group.end; first += width) {

@@ -12,6 +12,7 @@
 #include <mpi.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace flecsi_lite::topology::ntree {
@@ -35,12 +36,16 @@ class gravity_tree {
              std::size_t n, const gravity_options& options, MPI_Comm comm);
 
   /// Accelerations and potentials (G = 1) of the n owned particles, in their order: bitwise equal
-  /// for any number of ranks. Not collective (all communication happens in build).
+  /// for any number of ranks. Not collective (all communication happens in build). With `wanted`
+  /// (n flags, nullable) only the target groups holding a wanted particle are walked: the wanted
+  /// particles get the same bits, some others keep what the arrays held (gravity_targets).
   template<class Near>
-  gravity_counts evaluate(const Near& near, point<D>* acceleration, double* potential) const {
+  gravity_counts evaluate(const Near& near, point<D>* acceleration, double* potential,
+                          const std::uint8_t* wanted = nullptr) const {
     gravity_targets<D> targets;
     targets.x = owned_x_.data();
     targets.h = owned_h_.data();
+    targets.wanted = wanted;
     return gravity_walk<D>(sources(), groups_, targets, options_, near, acceleration, potential);
   }
 

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <numeric>
@@ -374,6 +375,55 @@ TEST_CASE("the walk is its sequential definition, whatever the threads and group
   }
   REQUIRE(parallel.counts.node_interactions == nodes);
   REQUIRE(parallel.counts.particle_interactions == particles);
+}
+
+TEST_CASE("wanted targets: only their groups are walked, with the whole walk's bits", "[ntree][gravity]") {
+  // Individual time steps ask for the active particles' field (a clustered few) and, later, for
+  // the rest: the two partial walks together give every target the whole walk's bits.
+  const reference_set& r = reference("plummer");
+  const nt::gravity_options options;
+  const field whole = walk(r.f, options, spline_pair{});
+  std::vector<std::uint8_t> wanted(r.f.size(), 0), rest(r.f.size(), 1);
+  for (std::size_t i = 0; i < r.f.size(); i += 97) wanted[i] = 1, rest[i] = 0;  // scattered
+  for (std::size_t i = 4000; i < 4300; ++i) wanted[i] = 1, rest[i] = 0;         // a cluster
+  const double untouched = -12345;
+  field part;
+  part.a.assign(r.f.size(), nt::point<3>{untouched, untouched, untouched});
+  part.phi.assign(r.f.size(), untouched);
+  const auto partial = [&](const std::vector<std::uint8_t>& mask) {
+    nt::gravity_targets<3> targets{r.f.set.x.data(), r.f.set.h.data(), mask.data()};
+    return nt::gravity_walk<3>(nt::gravity_sources_of(r.f.tree), r.f.groups, targets, options, spline_pair{},
+                               part.a.data(), part.phi.data());
+  };
+  const nt::gravity_counts first = partial(wanted);
+  std::size_t walked_groups = 0;
+  std::uint64_t walked_targets = 0;
+  for (const auto& group : r.f.groups) {
+    bool any = false;
+    for (std::uint32_t i = group.begin; i < group.end; ++i) any = any || wanted[i];
+    walked_groups += any;
+    for (std::uint32_t i = group.begin; i < group.end; ++i) {
+      if (any) {
+        REQUIRE(part.a[i] == whole.a[i]);
+        REQUIRE(part.phi[i] == whole.phi[i]);
+        ++walked_targets;
+      } else {
+        REQUIRE(part.phi[i] == untouched);
+      }
+    }
+  }
+  REQUIRE(walked_groups > 0);
+  REQUIRE(walked_groups < r.f.groups.size());
+  REQUIRE(first.node_interactions < whole.counts.node_interactions);
+  const nt::gravity_counts second = partial(rest);
+  REQUIRE(part.a == whole.a);
+  REQUIRE(part.phi == whole.phi);
+  // Groups holding both kinds are walked twice; none is skipped by both walks.
+  REQUIRE(first.node_interactions + second.node_interactions >= whole.counts.node_interactions);
+  std::cout << "gravity wanted targets: " << walked_groups << " of " << r.f.groups.size() << " groups ("
+            << walked_targets << " targets) walked for " << std::count(wanted.begin(), wanted.end(), 1)
+            << " wanted; node interactions " << first.node_interactions << " of " << whole.counts.node_interactions
+            << "\n";
 }
 
 TEST_CASE("multipole_field is multipole_potential and multipole_acceleration at once", "[ntree][gravity]") {
