@@ -43,6 +43,11 @@ struct viscosity_switch_settings {
   initial_alpha start = initial_alpha::alpha_max;
 };
 
+/// alpha at the start of a run (`viscosity_switch_start`): alpha_max, or alpha_min as Phantom.
+inline double starting_alpha(const viscosity_switch_settings& settings) {
+  return settings.start == initial_alpha::alpha_min ? settings.alpha_min : settings.alpha_max;
+}
+
 /// d(div v)/dt = div a - sum_kl (dv_k/dx_l)(dv_l/dx_k) (CD10 sec. 2.3; Price et al. 2018 sec. 2.2.9):
 /// the time derivative of the velocity gradient's trace along the particle's path, from the
 /// divergence of the acceleration and the gradient tensor itself, with no lag behind the flow.

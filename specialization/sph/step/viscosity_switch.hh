@@ -152,8 +152,7 @@ void update_switch_alpha(neighbours_ro<D> neighbours_object, physics_settings se
 template<int D>
 void start_switch_alpha(physics_settings settings, double now, ro<double> divergence, wo<double> alpha,
                         wo<double> previous_divergence, wo<double> previous_time) {
-  const physics::viscosity_switch_settings& w = settings.viscosity_switch;
-  const double start = w.start == physics::initial_alpha::alpha_min ? w.alpha_min : w.alpha_max;
+  const double start = physics::starting_alpha(settings.viscosity_switch);
   flecsi_lite::forall(
     divergence.size(),
     [&](std::size_t a) {
