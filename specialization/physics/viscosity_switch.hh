@@ -26,6 +26,13 @@ enum class divergence_rate_estimate { acceleration, difference };
 /// length (support 2h for the cubic spline, as Phantom's).
 enum class local_alpha_form { cullen_dehnen, price };
 
+/// alpha at the start of a run: alpha_max (a shock present at t = 0 is damped from the first
+/// step), or alpha_min, as Phantom starts (init_part sets alpha = 0, then alpha = max(alpha,
+/// alpha_loc) after the first derivatives; Price et al. 2018, PASA 35, e031) and as SWIFT's SPHENIX
+/// and ANARCHY start from 0.1 of an alpha_max of 2: a smooth flow (the Gresho vortex) is then
+/// not damped by alpha_max for the several decay times it takes to fall.
+enum class initial_alpha { alpha_max, alpha_min };
+
 struct viscosity_switch_settings {
   bool enabled = false;  ///< off: the constant alpha (with the optional Balsara factor)
   double alpha_min = 0.0;
@@ -33,7 +40,13 @@ struct viscosity_switch_settings {
   double decay_length = 0.1;  ///< l of tau = H / (2 l v_sig)
   divergence_rate_estimate rate = divergence_rate_estimate::acceleration;
   local_alpha_form form = local_alpha_form::price;
+  initial_alpha start = initial_alpha::alpha_max;
 };
+
+/// alpha at the start of a run (`viscosity_switch_start`): alpha_max, or alpha_min as Phantom.
+inline double starting_alpha(const viscosity_switch_settings& settings) {
+  return settings.start == initial_alpha::alpha_min ? settings.alpha_min : settings.alpha_max;
+}
 
 /// d(div v)/dt = div a - sum_kl (dv_k/dx_l)(dv_l/dx_k) (CD10 sec. 2.3; Price et al. 2018 sec. 2.2.9):
 /// the time derivative of the velocity gradient's trace along the particle's path, from the

@@ -54,7 +54,7 @@ physics_block declare_physics(const physics_settings& defaults) {
          "viscosity switch: the smallest alpha")
     .range(0, 100);
   p.real("viscosity_alpha_max", member(&physics_settings::viscosity_switch, &viscosity_switch_settings::alpha_max),
-         "viscosity switch: the largest alpha (and the alpha at t = 0)")
+         "viscosity switch: the largest alpha (and the alpha at t = 0 unless viscosity_switch_start = alpha_min)")
     .range(0, 100);
   p.real("viscosity_decay_length",
          member(&physics_settings::viscosity_switch, &viscosity_switch_settings::decay_length),
@@ -69,6 +69,10 @@ physics_block declare_physics(const physics_settings& defaults) {
            local_alpha_form_names(),
            "viscosity switch: alpha_loc = min(10 h^2 A / c^2, alpha_max) (price: Price et al. 2018) or "
            "alpha_max H^2 A / (v_sig^2 + H^2 A) (cullen_dehnen: CD10 eq. 13)");
+  p.choice("viscosity_switch_start", member(&physics_settings::viscosity_switch, &viscosity_switch_settings::start),
+           initial_alpha_names(),
+           "viscosity switch: alpha at the start of a run, alpha_max (a shock at t = 0) or alpha_min (Phantom: a "
+           "smooth flow is not damped while alpha decays)");
   p.real("conductivity_alpha", &physics_settings::conductivity,
          "alpha_u of the Price (2008) artificial conductivity (0: off)")
     .range(0, 100);
@@ -167,6 +171,13 @@ const flecsi_lite::runtime::name_table<physics::local_alpha_form>& local_alpha_f
   using physics::local_alpha_form;
   static const flecsi_lite::runtime::name_table<local_alpha_form> table{
     "alpha_loc form", {{"price", local_alpha_form::price}, {"cullen_dehnen", local_alpha_form::cullen_dehnen}}};
+  return table;
+}
+
+const flecsi_lite::runtime::name_table<physics::initial_alpha>& initial_alpha_names() {
+  using physics::initial_alpha;
+  static const flecsi_lite::runtime::name_table<initial_alpha> table{
+    "starting alpha", {{"alpha_max", initial_alpha::alpha_max}, {"alpha_min", initial_alpha::alpha_min}}};
   return table;
 }
 

@@ -29,9 +29,11 @@ const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::curve>& key
 const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::balance>& balance_names();
 
 /// The parameter-file names of the viscosity switch's d(div v)/dt estimates ("acceleration",
-/// "difference") and alpha_loc forms ("price", "cullen_dehnen").
+/// "difference"), alpha_loc forms ("price", "cullen_dehnen") and starting alphas ("alpha_max",
+/// "alpha_min").
 const flecsi_lite::runtime::name_table<physics::divergence_rate_estimate>& divergence_rate_names();
 const flecsi_lite::runtime::name_table<physics::local_alpha_form>& local_alpha_form_names();
+const flecsi_lite::runtime::name_table<physics::initial_alpha>& initial_alpha_names();
 
 /// Self-gravity: softened with the SPH kernel (Price & Monaghan 2007) on the gravity tree, in 3D
 /// without periodic axes (no Ewald summation yet).

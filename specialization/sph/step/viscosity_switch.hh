@@ -145,17 +145,18 @@ void update_switch_alpha(neighbours_ro<D> neighbours_object, physics_settings se
   });
 }
 
-/// At the start of a run: alpha = alpha_max (no history of div v tells a shock from a smooth
-/// flow yet; it decays within a few sound-crossing times of h where there is none), the current
-/// div v and `now` as the previous ones.
+/// At the start of a run: alpha = alpha_max by default (no history of div v tells a shock from a
+/// smooth flow yet; it decays within a few sound-crossing times of h where there is none), or
+/// alpha_min (`viscosity_switch_start`, Phantom's start: alpha rises at the first update wherever
+/// alpha_loc is larger); the current div v and `now` as the previous ones.
 template<int D>
 void start_switch_alpha(physics_settings settings, double now, ro<double> divergence, wo<double> alpha,
                         wo<double> previous_divergence, wo<double> previous_time) {
-  const double alpha_max = settings.viscosity_switch.alpha_max;
+  const double start = physics::starting_alpha(settings.viscosity_switch);
   flecsi_lite::forall(
     divergence.size(),
     [&](std::size_t a) {
-      alpha(a) = alpha_max;
+      alpha(a) = start;
       previous_divergence(a) = divergence(a);
       previous_time(a) = now;
     },

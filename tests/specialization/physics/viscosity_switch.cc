@@ -1,7 +1,7 @@
 // The Cullen & Dehnen (2010) switch's per-particle functions (physics/viscosity_switch.hh): the
 // limiter's limits (pure compression, pure shear, smooth converging flow), alpha_loc's limits
 // and its value by hand, the instant rise, the exponential decay over tau = H / (2 l v_sig), and
-// the bounds alpha_min, alpha_max.
+// the bounds alpha_min, alpha_max, and the starting alpha.
 #include "specialization/physics/viscosity_switch.hh"
 
 #include <catch2/catch.hpp>
@@ -53,6 +53,15 @@ TEST_CASE("alpha rises at once and decays on tau = H / (2 l v_sig)", "[viscosity
   const double twice =
     cullen_dehnen_alpha(cullen_dehnen_alpha(0.9, 0.1, 0.1, 0.1, 1.0, settings), 0.1, 0.1, 0.1, 1.0, settings);
   CHECK(twice == Approx(once).epsilon(1e-14));
+}
+
+TEST_CASE("the starting alpha: alpha_max by default, alpha_min as Phantom starts", "[viscosity_switch]") {
+  viscosity_switch_settings settings;
+  settings.alpha_min = 0.02;
+  settings.alpha_max = 1.5;
+  CHECK(starting_alpha(settings) == 1.5);
+  settings.start = initial_alpha::alpha_min;
+  CHECK(starting_alpha(settings) == 0.02);
 }
 
 TEST_CASE("d(div v)/dt from the accelerations: div a - tr(grad v grad v)", "[viscosity_switch]") {
