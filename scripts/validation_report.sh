@@ -99,10 +99,10 @@ short_lane() {
     --set output_file=glass_2d.h5part -- "$python" "$validation/check_glass.py" glass_2d.h5part 0.01 0.05 0.5
   record square square then_check square "$here/apps/square/square.par" --set output_file=square.h5part -- \
     "$python" "$validation/check_square.py" square.h5part 0.8 0.8 0.9
-  record kelvin_helmholtz kelvin_helmholtz_64 then_check kelvin_helmholtz \
-    "$here/apps/kelvin_helmholtz/kelvin_helmholtz.par" --set particles_per_side=64 --set end_time=1.5 \
-    --set output_file=kelvin_helmholtz_64.h5part -- \
-    "$python" "$validation/check_kelvin_helmholtz.py" kelvin_helmholtz_64.h5part 0.15
+  record kelvin_helmholtz kelvin_helmholtz_128 then_check kelvin_helmholtz \
+    "$here/apps/kelvin_helmholtz/kelvin_helmholtz.par" --set particles_per_side=128 --set end_time=1.5 \
+    --set output_file=kelvin_helmholtz_128.h5part -- \
+    "$python" "$validation/check_kelvin_helmholtz.py" kelvin_helmholtz_128.h5part 0.15
   record fluid fluid_dam_break app fluid "$fluid/dam_break.par" --set gauge_file=auto \
     --set output_file=fluid_dam_break.h5part --check-dam-break 0.12,0.01,1e-5
   record fluid fluid_dam_break_martin_moyce "$python" "$validation/check_dam_break_fronts.py" martin-moyce \
