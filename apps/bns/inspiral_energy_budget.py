@@ -53,8 +53,8 @@ def orbit_averaged(t, a, phase, orbits):
 
 
 def spins(path, release):
-    """(t, S_z of each star about its centre (2 columns), I_zz of each star, orbital Omega of the
-    centres) at every output step after the release."""
+    """(t, S_z and I_zz of star 1, the same of star 2, orbital Omega, separation a, radial and
+    tangential relative speeds of the centres) at every output step after the release."""
     rows = []
     with h5py.File(path, "r") as f:
         for name in sorted((k for k in f if k.startswith("Step#")), key=lambda k: int(k[5:])):
@@ -73,7 +73,9 @@ def spins(path, release):
                 centres.append((X, V))
                 row += [m @ (dx[:, 0] * dv[:, 1] - dx[:, 1] * dv[:, 0]), m @ (dx[:, 0] ** 2 + dx[:, 1] ** 2)]
             d, w = centres[1][0] - centres[0][0], centres[1][1] - centres[0][1]
-            rows.append(row + [(d[0] * w[1] - d[1] * w[0]) / (d[0] ** 2 + d[1] ** 2)])
+            a = np.linalg.norm(d)
+            radial = w @ d / a
+            rows.append(row + [(d[0] * w[1] - d[1] * w[0]) / a**2, a, radial, np.linalg.norm(w - radial * d / a)])
     return np.array(rows)
 
 
@@ -154,6 +156,15 @@ def main():
         print(f"{threshold:7.2f} | {t_run:10.4g} | {t_peters:6.4g} | {t_energy:9.4g} | {t_power:8.4g} | "
               f"{(radiated[i] - radiated[reference]) / curve:11.4f} | {tide / curve:7.4f} | {power_ratio[i]:10.4f} | {tide_power:7.4f}"
               f" | {s / s0:5.3f} | {corotation:11.3f} | {paid / curve:14.4f}")
+    # The plunge (Lai, Rasio & Shapiro 1994 find a radial infall ~10% of the orbital speed just
+    # before contact): the last output step before contact against Peters' circular inspiral there.
+    apart = np.nonzero((spin[:, 6] > 2 * radius) & (spin[:, 0] <= t[-1]))[0]
+    if apart.size:
+        k = apart[-1]
+        x = spin[k, 6]
+        peters_ratio = 64 / 5 * G**3 * m1 * m2 * (m1 + m2) / (c**5 * x**3) / math.sqrt(G * (m1 + m2) / x)
+        print(f"last output step before contact: t = {spin[k, 0]:.6g}, a = {x / radius:.4f} R: radial / tangential "
+              f"speed of the centres {-spin[k, 7] / spin[k, 8]:.4f} (Peters' circular inspiral: {peters_ratio:.4f})")
     if not reached:
         failures.append(f"the averaged separation reaches none of {args.radii} R")
     if failures:
