@@ -159,7 +159,8 @@ def main():
     # The plunge (Lai, Rasio & Shapiro 1994 find a radial infall ~10% of the orbital speed just
     # before contact): the last output step before contact against Peters' circular inspiral there.
     apart = np.nonzero((spin[:, 6] > 2 * radius) & (spin[:, 0] <= t[-1]))[0]
-    if apart.size:
+    contact = np.any((rows["relaxing"] == 0) & (rows["radiation_reaction_on"] == 0) & (rows["time"] > t[0]))
+    if contact and apart.size:
         k = apart[-1]
         x = spin[k, 6]
         peters_ratio = 64 / 5 * G**3 * m1 * m2 * (m1 + m2) / (c**5 * x**3) / math.sqrt(G * (m1 + m2) / x)
