@@ -92,6 +92,8 @@ def main():
     G, c = attribute(attributes, "gravitational_constant", PROGRAM), attribute(attributes, "speed_of_light", PROGRAM)
     m1, m2 = attribute(attributes, "star_mass", PROGRAM), attribute(attributes, "companion_mass", PROGRAM)
     radius = attribute(attributes, "star_radius", PROGRAM)
+    if abs(m1 / m2 - 1) > 1e-12:
+        sys.exit(f"{PROGRAM}: the tidal columns are for equal masses (star_mass {m1}, companion_mass {m2})")
     rows = read_statistics(args.statistics)
     acting = (rows["relaxing"] == 0) & (rows["radiation_reaction_on"] == 1)
     if np.count_nonzero(acting) < 3:
@@ -120,7 +122,8 @@ def main():
     power_ratio = orbit_averaged(t, power, phase, args.average_orbits) / orbit_averaged(
         t, peters_power(a), phase, args.average_orbits)
     print(f"released at t0 = {t[0]:.6g}, a0 = {a0 / radius:.4f} R; separation averaged over "
-          f"{args.average_orbits:g} orbit(s); energy curve from t = {t[reference]:.6g}, a = {mean[reference] / radius:.4f} R; spins S0 = {spin[0, 1]:.5g}, {spin[0, 3]:.5g} at t = {spin[0, 0]:.6g}")
+          f"{args.average_orbits:g} orbit(s); energy curve from t = {t[reference]:.6g}, "
+          f"a = {mean[reference] / radius:.4f} R; spins S0 = {spin[0, 1]:.5g}, {spin[0, 3]:.5g} at t = {spin[0, 0]:.6g}")
     print("a < (R) | t - t0 SPH | Peters | t(energy) | t(power) | E_rad/dE_pm | tide k2 | P/P_Peters | tide k2"
           " | S/S0 | S/(I Omega) | Omega dS/dE_pm")
     failures, reached = [], 0
@@ -154,7 +157,8 @@ def main():
         eps = 12 * N1_POLYTROPE_K2 * (radius / x) ** 5
         tide_power = (6 * (1 + eps) - 2) * (1 + eps) / 4
         print(f"{threshold:7.2f} | {t_run:10.4g} | {t_peters:6.4g} | {t_energy:9.4g} | {t_power:8.4g} | "
-              f"{(radiated[i] - radiated[reference]) / curve:11.4f} | {tide / curve:7.4f} | {power_ratio[i]:10.4f} | {tide_power:7.4f}"
+              f"{(radiated[i] - radiated[reference]) / curve:11.4f} | {tide / curve:7.4f} | "
+              f"{power_ratio[i]:10.4f} | {tide_power:7.4f}"
               f" | {s / s0:5.3f} | {corotation:11.3f} | {paid / curve:14.4f}")
     # The plunge (Lai, Rasio & Shapiro 1994 find a radial infall ~10% of the orbital speed just
     # before contact): the last output step before contact against Peters' circular inspiral there.
