@@ -41,6 +41,11 @@ PROGRAM = "tidal_inspiral"
 N1_POLYTROPE_K2 = (15 - math.pi**2) / (2 * math.pi**2)
 
 
+def tidal_energy(a, G, m, radius, k2):
+    """E(a) of the model's circular orbit (two equal stars, spins fixed): -G M mu / (2a) + 2 T / a^6."""
+    return -G * m * m / (2 * a) + 4 * k2 * G * m * m * radius**5 / a**6
+
+
 def tidal_separation(t, a0, G, c, m, radius, k2):
     """a(t) of the tidal model from a0 at t[0] (NaN after contact, a = 2 R) and the time of contact
     (None if after t[-1]), by 4th-order Runge-Kutta on a grid 20 times finer than t."""
