@@ -106,8 +106,9 @@ std::vector<std::uint8_t> active_particles(simulation<D>& s) {
 /// (s.deferred_fields, on the same tree) until the potential energy or the files read every
 /// particle's phi. Each particle's values are those of the whole walk, to the bit, whenever they
 /// are read (the inactive ones' from their last active step made the Evrard collapse's energy
-/// seem off by 2.1e-2 in mid-collapse, against 1.9e-3). When the previous step's deferred walk
-/// was needed two steps in a row (totals every step) it walks every group at once: the same bits.
+/// seem off by 2.1e-2 in mid-collapse, against 1.9e-3). When the deferred walks of the two steps
+/// before were both needed (totals in every step), the step walks every group at once: the same
+/// bits, without walking twice the groups that hold both kinds.
 /// last_gravity counts the interactions evaluated in the step. Does nothing with gravity off.
 template<int D>
 gravity_record update_gravity(simulation<D>& s) {
