@@ -131,4 +131,12 @@ registered_field make_registered_field(std::string name, data::persistence persi
   return f;
 }
 
+// The element types of most fields, compiled once in field_instances.cc.
+extern template registered_field make_registered_field<double>(std::string, data::persistence);
+extern template registered_field make_registered_field<std::uint64_t>(std::string, data::persistence);
+extern template registered_field make_registered_field<std::int64_t>(std::string, data::persistence);
+extern template registered_field make_registered_field<std::array<double, 1>>(std::string, data::persistence);
+extern template registered_field make_registered_field<std::array<double, 2>>(std::string, data::persistence);
+extern template registered_field make_registered_field<std::array<double, 3>>(std::string, data::persistence);
+
 }  // namespace flecsi_lite::data

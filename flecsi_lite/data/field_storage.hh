@@ -5,7 +5,9 @@
 
 #include "flecsi_lite/util/kokkos.hh"
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <type_traits>
@@ -99,5 +101,13 @@ class field_storage final : public field_storage_base {
  private:
   view_type view_;
 };
+
+// The element types of most fields, compiled once in field_instances.cc.
+extern template class field_storage<double>;
+extern template class field_storage<std::uint64_t>;
+extern template class field_storage<std::int64_t>;
+extern template class field_storage<std::array<double, 1>>;
+extern template class field_storage<std::array<double, 2>>;
+extern template class field_storage<std::array<double, 3>>;
 
 }  // namespace flecsi_lite::data

@@ -188,3 +188,10 @@ class ntree : public data::topology_base {
 }  // namespace flecsi_lite::topology::ntree
 
 #include "flecsi_lite/topology/ntree/detail/ntree_definitions.hh"
+
+namespace flecsi_lite::topology::ntree {
+// Compiled once per dimension in ntree.cc.
+extern template class ntree<1>;
+extern template class ntree<2>;
+extern template class ntree<3>;
+}  // namespace flecsi_lite::topology::ntree

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 
 namespace flecsph::sph {
 
@@ -26,6 +27,14 @@ namespace persist = flecsi_lite::persist;
 /// fluid exerts on them are accumulated (boundary_impulse, boundary_work) so that the totals of
 /// fluid plus walls are conserved and can be checked.
 enum class particle_kind : std::int32_t { fluid = 0, wall = 1 };
+}  // namespace flecsph::sph
+
+// The storage of the kind field, compiled once in field_instances.cc.
+extern template class flecsi_lite::data::field_storage<flecsph::sph::particle_kind>;
+extern template flecsi_lite::data::registered_field
+  flecsi_lite::data::make_registered_field<flecsph::sph::particle_kind>(std::string, flecsi_lite::data::persistence);
+
+namespace flecsph::sph {
 
 /// The fields of dimension D, declared once (fields are per topology type, ntree<D>), each with
 /// its persistence (flecsi_lite/data/persistence.hh): what the output, the checkpoints, the

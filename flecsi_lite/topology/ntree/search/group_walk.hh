@@ -302,4 +302,9 @@ class group_walk {
   neighbour_list_builder builder_;
 };
 
+// Compiled once per dimension in group_walk.cc.
+extern template class group_walk<1>;
+extern template class group_walk<2>;
+extern template class group_walk<3>;
+
 }  // namespace flecsi_lite::topology::ntree

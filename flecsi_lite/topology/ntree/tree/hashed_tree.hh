@@ -243,4 +243,9 @@ class hashed_tree {
   std::vector<std::uint32_t> child_offset_;
 };
 
+// Compiled once per dimension in hashed_tree.cc.
+extern template class hashed_tree<1>;
+extern template class hashed_tree<2>;
+extern template class hashed_tree<3>;
+
 }  // namespace flecsi_lite::topology::ntree
