@@ -8,6 +8,7 @@
 #include "specialization/physics/gravitational_waves.hh"
 #include "specialization/physics/gravity_softening.hh"
 #include "specialization/physics/kernels.hh"
+#include "specialization/physics/pressure_energy.hh"
 #include "specialization/physics/radiation_reaction.hh"
 #include "specialization/physics/smoothing_length.hh"
 #include "specialization/physics/tait.hh"

@@ -421,7 +421,7 @@ void forces_by_lists(const sph::neighbourhood<3>& n, const std::vector<sph::vect
   in.inverse_h = f.inverse_h.data();
   for (std::size_t a = 0; a < n.size(); ++a) {
     sph::vector<3> dv;
-    sph::detail::force_sums<Kernel, false, false, 3>(walk, a, in, viscosity, 0.0, dv, out.du[a], out.signal[a]);
+    sph::detail::force_sums<Kernel, false, false, false, 3>(walk, a, in, viscosity, 0.0, dv, out.du[a], out.signal[a]);
     out.ax[a] = dv[0], out.ay[a] = dv[1], out.az[a] = dv[2];
   }
 }

@@ -42,7 +42,8 @@ namespace flecsph::sph {
 /// field's units and SWIFT names (`units`, `in_snapshots`, `in_swift_initial_conditions`,
 /// `moving_particles_only`: walls have no such snapshot dataset; files/snapshot_layout.hh), and
 /// a field that exists in files only with a feature of the run says so (`only_with`: "gravity",
-/// "individual_time_steps", "viscosity_switch", "balsara_switch", "velocity_gradients"; such a
+/// "individual_time_steps", "viscosity_switch", "balsara_switch", "velocity_gradients",
+/// "pressure_energy"; such a
 /// field also takes memory only in the runs that have its feature; has_feature() in
 /// files/particle_output.hh says which a run has).
 ///
@@ -129,6 +130,13 @@ struct fields {
                       .moving_particles_only()};
   static inline const definition<double> omega{"omega", persist::restart()};  ///< grad-h factor (1 for fixed h)
   static inline const definition<double> pressure_term{"P_over_omega_rho2", persist::restart()};  ///< P / (Omega rho^2)
+  // Pressure-energy SPH only (formulation = pressure_energy, only_with("pressure_energy")): the
+  // smoothed pressure P_bar = (gamma-1) sum_b m_b u_b W_ab(h_a) of the density pass (the field P
+  // holds it too, from the equation of state) and its grad-h term h dP_bar/dh / (D rho Omega)
+  // (Hopkins 2013, sec. 2.4); restart: with individual time steps an inactive particle drifts them.
+  static inline const definition<double> smoothed_pressure{"P_bar", persist::restart().only_with("pressure_energy")};
+  static inline const definition<double> pressure_grad_h{"P_bar_grad_h",
+                                                         persist::restart().only_with("pressure_energy")};
   // The velocity gradients (with the Balsara switch, and div v with individual time steps) and
   // the Balsara factor: only with the physics that reads them (no memory, no file otherwise).
   static inline const definition<double> velocity_divergence{"div_v",

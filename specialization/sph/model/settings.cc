@@ -20,6 +20,9 @@ physics_block declare_physics(const physics_settings& defaults) {
   physics_block p(defaults);
   p.choice("kernel", &physics_settings::kernel, physics::kernel_names(), "smoothing kernel");
   p.choice("eos", member(&physics_settings::eos, &equation_of_state::type), physics::eos_names(), "equation of state");
+  p.choice("formulation", &physics_settings::equations, formulation_names(),
+           "SPH forces: density_energy (P = (gamma-1) rho u per particle) or pressure_energy (smoothed P_bar, "
+           "Hopkins 2013: no pressure blip at contacts; ideal gas without gravity)");
   p.real("gamma", member(&physics_settings::eos, &equation_of_state::ideal, &physics::ideal_gas::gamma),
          "adiabatic index of the ideal gas")
     .greater_than(1);
@@ -144,6 +147,15 @@ physics_block declare_physics(const physics_settings& defaults) {
           "viscosity_alpha = 0 with viscosity_switch = on: the switch keeps beta / viscosity_alpha as its ratio of "
           "beta to alpha, so viscosity_alpha must be > 0");
     }
+    if (s.pressure_energy() && s.eos.type != physics::eos_type::ideal_gas)
+      throw flecsi_lite::runtime::parameter_error(
+        "formulation = pressure_energy with eos = " + std::string(physics::eos_name(s.eos.type)) +
+        ": the smoothed pressure P_bar = (gamma-1) sum_b m_b u_b W_ab weighs the neighbours' internal energies, "
+        "which only an ideal gas has; set eos = ideal_gas or formulation = density_energy");
+    if (s.pressure_energy() && s.gravity.enabled)
+      throw flecsi_lite::runtime::parameter_error(
+        "formulation = pressure_energy with gravity = on: the grad-h gravity term and the force pass with "
+        "gravity exist for density_energy only; set formulation = density_energy or gravity = off");
     const int v = s.time_steps.limiter;
     if (v != 0 && (v < 2 || (v & (v - 1)) != 0))
       throw flecsi_lite::runtime::parameter_error("time_step_limiter = " + std::to_string(v) +
@@ -152,6 +164,13 @@ physics_block declare_physics(const physics_settings& defaults) {
   return p;
 }
 }  // namespace
+
+const flecsi_lite::runtime::name_table<formulation>& formulation_names() {
+  static const flecsi_lite::runtime::name_table<formulation> table{
+    "formulation",
+    {{"density_energy", formulation::density_energy}, {"pressure_energy", formulation::pressure_energy}}};
+  return table;
+}
 
 const flecsi_lite::runtime::name_table<time_stepping>& time_stepping_names() {
   static const flecsi_lite::runtime::name_table<time_stepping> table{

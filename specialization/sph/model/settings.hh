@@ -47,6 +47,14 @@ struct gravity_settings {
   bool grad_h = true;
 };
 
+/// The SPH formulation of the forces: "density-energy" (P_a = (gamma - 1) rho_a u_a of each particle,
+/// Price 2012) or "pressure-energy" (the smoothed pressure P_bar_a = (gamma - 1) sum_b m_b u_b W_ab(h_a),
+/// Hopkins 2013, MNRAS 428, 2840, sec. 2.4), which has no pressure blip at a contact discontinuity.
+enum class formulation { density_energy, pressure_energy };
+
+/// The parameter-file names of the formulations ("density_energy", "pressure_energy").
+const flecsi_lite::runtime::name_table<formulation>& formulation_names();
+
 /// One time step for all particles (the smallest of their criteria), or each particle its own
 /// power-of-two fraction of the run (block time steps, time_bins.hh).
 enum class time_stepping { global, individual };
@@ -67,6 +75,9 @@ struct time_step_settings {
 struct physics_settings {
   physics::kernel_type kernel = physics::kernel_type::cubic_spline;
   physics::equation_of_state eos{};
+  /// Pressure-energy needs an ideal gas and no self-gravity (checked with the keys).
+  formulation equations = formulation::density_energy;
+  bool pressure_energy() const { return equations == formulation::pressure_energy; }
   /// Monaghan & Gingold (1983) viscosity, seed eqs. (1.10)-(1.11): alpha 1, beta 2, epsilon 0.01.
   physics::viscosity_parameters viscosity{};
   bool balsara = false;  ///< Balsara (1995) switch on the viscosity

@@ -11,6 +11,7 @@
 
 #include "specialization/physics/gravity_softening.hh"
 #include "specialization/physics/kernels.hh"
+#include "specialization/physics/pressure_energy.hh"
 #include "specialization/physics/smoothing_length.hh"
 
 #include "flecsi_lite/execution.hh"
@@ -34,18 +35,20 @@ using density_pack = physics::simd::pack_at_most<4>;
 /// reused from target to target.
 struct gathered_pairs {
   std::vector<double> r, m;
-  std::size_t count = 0;  ///< list entries (the padding excluded)
+  std::vector<double> mu;  ///< m_b u_b, gathered for pressure-energy only
+  std::size_t count = 0;   ///< list entries (the padding excluded)
 };
 
 template<int D>
 void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>* x, const double* m,
-                  gathered_pairs& out) {
+                  gathered_pairs& out, const double* u = nullptr) {
   const std::size_t first = walk.begin(a), count = walk.end(a) - first, W = physics::simd::lanes<density_pack>;
   const std::size_t padded = (count + W - 1) / W * W;
   if (out.r.size() < padded) {
     out.r.resize(padded);
     out.m.resize(padded);
   }
+  if (u && out.mu.size() < padded) out.mu.resize(padded);
   // Pack by pack; past the end, lanes repeat the last entry and are overwritten by the padding.
   namespace simd = physics::simd;
   using T = density_pack;
@@ -55,19 +58,22 @@ void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>*
     const T r2 = walk.separations(first + i, first + count, x[a], x, b, r);
     simd::store(simd::square_root(r2), out.r.data() + i);
     simd::store(simd::generate<T>([&](std::size_t l) { return m[b[l]]; }), out.m.data() + i);
+    if (u) simd::store(simd::generate<T>([&](std::size_t l) { return m[b[l]] * u[b[l]]; }), out.mu.data() + i);
   }
   for (std::size_t i = count; i < padded; ++i) {
     out.r[i] = std::numeric_limits<double>::infinity();
     out.m[i] = 0.0;
+    if (u) out.mu[i] = 0.0;
   }
   out.count = count;
 }
 
-/// rho(h) = sum_b m_b W(r_ab, h) and its derivative sum_b m_b dW/dh over a's gathered list, T the
-/// number type of the pair arithmetic (physics/simd.hh); the terms go to striped sums in list
-/// order, so the sums are bitwise those of T = double on every instruction set.
+/// sum_b w_b W(r_ab, h) and its derivative sum_b w_b dW/dh over a's gathered list with the
+/// weights w (one per entry, padded as r), T the number type of the pair arithmetic
+/// (physics/simd.hh); the terms go to striped sums in list order, so the sums are bitwise those
+/// of T = double on every instruction set.
 template<class Kernel, class T = density_pack>
-void density_sums(const gathered_pairs& pairs, double h, double& rho, double& drho_dh) {
+void kernel_sums(const gathered_pairs& pairs, const double* weights, double h, double& sum_w, double& dsum_dh) {
   namespace simd = physics::simd;
   constexpr std::size_t W = simd::lanes<T>;
   const kernel_at<Kernel> kernel(h);
@@ -75,15 +81,33 @@ void density_sums(const gathered_pairs& pairs, double h, double& rho, double& dr
   simd::striped_sum<T> sum, derivative;
   const T zero = 0.0;
   for (std::size_t j = 0; j < pairs.count; j += W) {
-    const T r = simd::load<T>(pairs.r.data() + j), m_b = simd::load<T>(pairs.m.data() + j);
+    const T r = simd::load<T>(pairs.r.data() + j), m_b = simd::load<T>(weights + j);
     const auto inside = !(r >= reach);  // outside the kernel (or padding): the term is zero
     T w, dw_dh;
     kernel.value_and_h_derivative(r, w, dw_dh);
     sum.add(simd::select(inside, m_b * w, zero));
     derivative.add(simd::select(inside, m_b * dw_dh, zero));
   }
-  rho = sum.total();
-  drho_dh = derivative.total();
+  sum_w = sum.total();
+  dsum_dh = derivative.total();
+}
+
+/// rho(h) = sum_b m_b W(r_ab, h) and its derivative sum_b m_b dW/dh over a's gathered list.
+template<class Kernel, class T = density_pack>
+void density_sums(const gathered_pairs& pairs, double h, double& rho, double& drho_dh) {
+  kernel_sums<Kernel, T>(pairs, pairs.m.data(), h, rho, drho_dh);
+}
+
+/// Pressure-energy (Hopkins 2013, sec. 2.4): P_bar_a = (gamma-1) sum_b m_b u_b W(r_ab, h_a) at
+/// a's final h and its grad-h term g_a (physics/pressure_energy.hh; 0 with a fixed h). The pairs
+/// must hold m_b u_b (gather_pairs with u).
+template<class Kernel, int D>
+void smoothed_pressure(const gathered_pairs& pairs, double gamma_minus_one, double h, double rho, double omega,
+                       bool adapt, double& P_bar, double& grad_h) {
+  double sum = 0, dsum_dh = 0;
+  kernel_sums<Kernel>(pairs, pairs.mu.data(), h, sum, dsum_dh);
+  P_bar = gamma_minus_one * sum;
+  grad_h = adapt ? physics::pressure_energy_grad_h<D>(h, gamma_minus_one * dsum_dh, rho, omega) : 0.0;
 }
 
 /// zeta_a / Omega_a with zeta_a = (dh_a/drho_a) sum_b m_b d phi(r_ab, h_a) / d h_a (Price & Monaghan
@@ -110,11 +134,20 @@ double gravity_zeta_over_omega(const neighbour_walk<D>& walk, std::size_t a, dou
   }
 }
 
-/// The loop of compute_density; `zeta_over_omega` is null without gravity.
+/// What the density pass adds for pressure-energy: u of owned particles and ghosts, and where
+/// P_bar and its grad-h term go (owned).
+struct pressure_energy_outputs {
+  const double* u = nullptr;
+  double *P_bar = nullptr, *grad_h = nullptr;
+};
+
+/// The loop of compute_density; `zeta_over_omega` is null without gravity, `pressure` without
+/// pressure-energy.
 template<int D, flecsi_lite::privilege Ghost>
 double density_loop(const neighbourhood<D>& neighbours, const physics_settings& settings, double earlier,
                     const vector<D>* xs, const double* ms, ro<particle_kind> kind, rw<double> h, wo<double> rho,
-                    wo<double> omega, double* zeta_over_omega) {
+                    wo<double> omega, double* zeta_over_omega, pressure_energy_outputs pressure = {}) {
+  const double gamma_minus_one = settings.eos.ideal.gamma - 1.0;
   const neighbour_walk<D> walk(neighbours);
   const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
   const double half_reach = 0.5 * neighbours.reach;
@@ -129,7 +162,7 @@ double density_loop(const neighbourhood<D>& neighbours, const physics_settings& 
         const bool adapt = settings.adaptive_smoothing_length && kind(a) == particle_kind::fluid;
         double h_a = h_start, rho_a = 0, drho_dh = 0;
         thread_local gathered_pairs pairs;
-        gather_pairs<D>(walk, a, xs, ms, pairs);
+        gather_pairs<D>(walk, a, xs, ms, pairs, pressure.u);
         for (int iteration = 1;; ++iteration) {
           density_sums<Kernel>(pairs, h_a, rho_a, drho_dh);
           if (!adapt || iteration >= settings.h_iterations) break;
@@ -144,6 +177,9 @@ double density_loop(const neighbourhood<D>& neighbours, const physics_settings& 
         // At h_a > h_limit the caller searches again and calls the task again: zeta is recomputed.
         if (zeta_over_omega)
           zeta_over_omega[a] = gravity_zeta_over_omega<Kernel, D>(walk, a, h_a, rho_a, omega(a), adapt, xs, ms);
+        if (pressure.u)
+          smoothed_pressure<Kernel, D>(pairs, gamma_minus_one, h_a, rho_a, omega(a), adapt, pressure.P_bar[a],
+                                       pressure.grad_h[a]);
         local_worst = std::max(local_worst, h_a / h_limit);
       },
       Kokkos::Max<double>(worst), "sph::compute_density", target_schedule);
@@ -176,6 +212,17 @@ double compute_density_with_gravity(neighbours_ro<D> neighbours, physics_setting
                                     wo<double> zeta_over_omega) {
   return detail::density_loop<D, Ghost>(*neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
                                         zeta_over_omega.data());
+}
+
+/// The same for pressure-energy (settings.pressure_energy()): also P_bar_a and its grad-h term
+/// (detail::smoothed_pressure), which read the neighbours' u as well.
+template<int D, flecsi_lite::privilege Ghost>
+double compute_density_pressure_energy(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
+                                       ro_neighbours<vector<D>, Ghost> x, ro_neighbours<double, Ghost> m,
+                                       ro<particle_kind> kind, rw<double> h, wo<double> rho, wo<double> omega,
+                                       ro_neighbours<double, Ghost> u, wo<double> P_bar, wo<double> grad_h) {
+  return detail::density_loop<D, Ghost>(*neighbours, settings, earlier, x.data(), m.data(), kind, h, rho, omega,
+                                        nullptr, {u.data(), P_bar.data(), grad_h.data()});
 }
 
 }  // namespace flecsph::sph

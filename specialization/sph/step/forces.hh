@@ -39,6 +39,10 @@ struct force_fields {
   /// 1/h of every particle the lists name (inverse_smoothing_lengths): once per particle, not
   /// once per pair.
   const double* inverse_h = nullptr;
+  // Pressure-energy only (formulation = pressure_energy): the grad-h term g of P_bar (owned and
+  // ghosts) and gamma - 1; pressure_term then holds A = (gamma-1) u / P_bar.
+  const double* pressure_grad_h = nullptr;
+  double gamma_minus_one = 0;
 };
 
 /// 1/h of the first n particles (owned, then ghosts), computed once per launch of the force task.
@@ -59,7 +63,9 @@ inline std::vector<double>& inverse_h_buffer() {
 /// The sums of compute_forces for particle a: dv/dt, du/dt and the largest signal velocity.
 /// Conductivity is a compile-time choice: without it, the loop has less to keep live. With
 /// GradHGravity the bracket of dv/dt has the grad-h gravity term (G/2)(z_a F_a + z_b F_b),
-/// z = zeta / Omega, as symmetric in (a, b) as the pressure term.
+/// z = zeta / Omega, as symmetric in (a, b) as the pressure term. With PressureEnergy the
+/// pressure part of the bracket is A_a (q_b - g_a) F_a + A_b (q_a - g_b) F_b, q = (gamma-1) u
+/// (physics/pressure_energy.hh), and du/dt takes its first term.
 ///
 /// T is the number type of the pair arithmetic: a pack (physics/simd.hh) takes lanes() list
 /// entries at once, gathered from the fields; entries beyond the kernel, beyond the list or at
@@ -67,7 +73,7 @@ inline std::vector<double>& inverse_h_buffer() {
 /// list order, so the sums are bitwise those of T = double (tests/specialization/sph/simd_pairs.cc)
 /// on every instruction set. A pair costs one square root and two divisions (1/r and the
 /// viscosity's): 1/h comes per particle, and 1/q = h/r.
-template<class Kernel, bool Conductivity, bool GradHGravity, int D, class T = physics::simd::pack>
+template<class Kernel, bool Conductivity, bool GradHGravity, bool PressureEnergy, int D, class T = physics::simd::pack>
 void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields<D>& in,
                 const physics::viscosity_parameters& viscosity, double conductivity, vector<D>& dv_dt, double& du,
                 double& signal) {
@@ -113,11 +119,21 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
                    physics::approaching_pair_viscosity<T>(viscosity, r_dot_v, r2, particle_a,
                                                           {rho_b, c_b, h_b, in.balsara ? gather(in.balsara) : T(1.0)}),
                    zero);
-    T bracket = (term_a * F_a + gather(in.pressure_term) * F_b) + Pi * F_ab;
+    // The pressure part of the bracket whose first term is a's own (du/dt takes it).
+    T own_term, bracket;
+    if constexpr (PressureEnergy) {
+      const T q_b = in.gamma_minus_one * gather(in.u);
+      own_term = term_a * (q_b - in.pressure_grad_h[a]) * F_a;
+      const T other = gather(in.pressure_term) * (in.gamma_minus_one * in.u[a] - gather(in.pressure_grad_h)) * F_b;
+      bracket = (own_term + other) + Pi * F_ab;
+    } else {
+      own_term = term_a * F_a;
+      bracket = (own_term + gather(in.pressure_term) * F_b) + Pi * F_ab;
+    }
     if constexpr (GradHGravity) bracket += in.half_G * (in.zeta_over_omega[a] * F_a + gather(in.zeta_over_omega) * F_b);
     const T m_b = gather(in.m);
     for (int k = 0; k < D; ++k) sum_v[k].subtract(simd::select(pair, m_b * bracket * r[k], zero));
-    T work = m_b * (term_a * F_a + 0.5 * Pi * F_ab) * r_dot_v;
+    T work = m_b * (own_term + 0.5 * Pi * F_ab) * r_dot_v;
     if constexpr (Conductivity)
       work += m_b * physics::artificial_conductivity<T>(conductivity, in.u[a], gather(in.u), in.P[a], gather(in.P),
                                                         rho_a, rho_b, F_ab * distance);
@@ -158,7 +174,7 @@ double force_loop(const neighbourhood<D>& neighbours, const physics_settings& se
   inverse_smoothing_lengths(in.h, particles, inverse_h);
   in.inverse_h = inverse_h.data();
   double smallest = std::numeric_limits<double>::max();
-  const auto loop = [&](auto kernel_type, auto with_conductivity, auto grad_h_gravity) {
+  const auto loop = [&](auto kernel_type, auto with_conductivity, auto grad_h_gravity, auto pressure_energy) {
     using Kernel = decltype(kernel_type);
     flecsi_lite::forall_reduce(
       targets.size(),
@@ -166,8 +182,9 @@ double force_loop(const neighbourhood<D>& neighbours, const physics_settings& se
         const std::size_t a = targets[i];
         vector<D> dv_dt;
         double du, signal;
-        force_sums<Kernel, decltype(with_conductivity)::value, decltype(grad_h_gravity)::value, D>(
-          walk, a, in, settings.viscosity, settings.conductivity, dv_dt, du, signal);
+        force_sums<Kernel, decltype(with_conductivity)::value, decltype(grad_h_gravity)::value,
+                   decltype(pressure_energy)::value, D>(walk, a, in, settings.viscosity, settings.conductivity, dv_dt,
+                                                        du, signal);
         if (in.gravity_acceleration)
           for (int k = 0; k < D; ++k) dv_dt[k] += in.gravity_acceleration[a][k];
         acceleration(a) = dv_dt;
@@ -189,9 +206,11 @@ double force_loop(const neighbourhood<D>& neighbours, const physics_settings& se
   physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel_type) {
     const auto with_gravity_term = [&](auto with_conductivity) {
       if (in.zeta_over_omega)
-        loop(kernel_type, with_conductivity, std::true_type{});
+        loop(kernel_type, with_conductivity, std::true_type{}, std::false_type{});
+      else if (in.pressure_grad_h)
+        loop(kernel_type, with_conductivity, std::false_type{}, std::true_type{});
       else
-        loop(kernel_type, with_conductivity, std::false_type{});
+        loop(kernel_type, with_conductivity, std::false_type{}, std::false_type{});
     };
     if (settings.conductivity > 0)
       with_gravity_term(std::true_type{});
@@ -215,20 +234,27 @@ double force_loop(const neighbourhood<D>& neighbours, const physics_settings& se
 ///            + sum_b m_b alpha_u v_sig^u (u_a - u_b) / rho_ab F_ab |r_ab|
 /// The bracket of dv/dt is computed by the same symmetric expression for (a, b) and (b, a), so the
 /// pair forces are exactly opposite: momentum is conserved to round-off, energy to the accuracy of
-/// the time integration.
+/// the time integration. Pressure-energy (field pressure_grad_h, present with formulation =
+/// pressure_energy) replaces p_a F_a by A_a (q_b - g_a) F_a and p_b F_b by A_b (q_a - g_b) F_b
+/// (detail::force_sums; P is then P_bar).
 template<int D, flecsi_lite::privilege Ghost>
 double compute_forces(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
                       ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
                       ro_neighbours<double, Ghost> m, ro_neighbours<double, Ghost> h, ro_neighbours<double, Ghost> rho,
                       ro_neighbours<double, Ghost> P, ro_neighbours<double, Ghost> cs,
                       ro_neighbours<double, Ghost> pressure_term, ro_neighbours<double, Ghost> u,
-                      ro_neighbours<double, Ghost> balsara, ro_neighbours<double, Ghost> alpha, ro<particle_kind> kind,
-                      wo<vector<D>> acceleration, wo<double> du_dt, wo<double> own_time_step) {
-  const detail::force_fields<D> in{x.data(),   v.data(),
-                                   m.data(),   h.data(),
-                                   rho.data(), P.data(),
-                                   cs.data(),  pressure_term.data(),
-                                   u.data(),   viscosity_factor(settings, balsara.data(), alpha.data())};
+                      ro_neighbours<double, Ghost> balsara, ro_neighbours<double, Ghost> alpha,
+                      ro_neighbours<double, Ghost> pressure_grad_h, ro<particle_kind> kind, wo<vector<D>> acceleration,
+                      wo<double> du_dt, wo<double> own_time_step) {
+  detail::force_fields<D> in{x.data(),   v.data(),
+                             m.data(),   h.data(),
+                             rho.data(), P.data(),
+                             cs.data(),  pressure_term.data(),
+                             u.data(),   viscosity_factor(settings, balsara.data(), alpha.data())};
+  if (settings.pressure_energy()) {
+    in.pressure_grad_h = pressure_grad_h.data();
+    in.gamma_minus_one = settings.eos.ideal.gamma - 1.0;
+  }
   return detail::force_loop<D, Ghost>(*neighbours, settings, earlier, in, h.size(), kind, acceleration, du_dt,
                                       own_time_step);
 }

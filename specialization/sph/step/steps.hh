@@ -157,6 +157,10 @@ void update_density(simulation<D>& s) {
   using flecsi_lite::na, flecsi_lite::ro, flecsi_lite::reduction::max;
   auto& p = *s.particles;
   const auto launch = [&](auto... field) {
+    if (s.physics.pressure_energy())
+      return reduce_interior_then_boundary<compute_density_pressure_energy<D, na>,
+                                           compute_density_pressure_energy<D, ro>, max>(
+        s.neighbours, s.physics, 0.0, field..., f::internal_energy(p), f::smoothed_pressure(p), f::pressure_grad_h(p));
     if (s.physics.gravity.enabled)
       return reduce_interior_then_boundary<compute_density_with_gravity<D, na>, compute_density_with_gravity<D, ro>,
                                            max>(s.neighbours, s.physics, 0.0, field..., f::zeta_over_omega(p));
@@ -203,10 +207,10 @@ void update_pressure(simulation<D>& s) {
       },
       std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
                       f::omega(p), f::velocity_divergence(p), curl));
-  flecsi_lite::execute<compute_equation_of_state<D>>(s.physics, f::density(p), f::internal_energy(p),
-                                                     f::smoothing_length()(p), f::omega(p),
-                                                     f::velocity_divergence(p).only_if(gradients), curl, f::pressure(p),
-                                                     f::sound_speed(p), f::pressure_term(p), balsara);
+  flecsi_lite::execute<compute_equation_of_state<D>>(
+    s.physics, f::density(p), f::internal_energy(p), f::smoothing_length()(p), f::omega(p),
+    f::velocity_divergence(p).only_if(gradients), curl, f::smoothed_pressure(p).only_if(s.physics.pressure_energy()),
+    f::pressure(p), f::sound_speed(p), f::pressure_term(p), balsara);
 }
 
 /// Accelerations and du/dt (with self-gravity: plus the grad-h gravity term and the tree's
@@ -238,7 +242,8 @@ void update_forces(simulation<D>& s) {
       return reduce_interior_then_boundary<compute_forces<D, na>, compute_forces<D, ro>, min>(s.neighbours, s.physics,
                                                                                               none, field...);
     },
-    std::tuple_cat(fields_read, fields_written));
+    std::tuple_cat(fields_read, std::make_tuple(f::pressure_grad_h(p).only_if(s.physics.pressure_energy())),
+                   fields_written));
 }
 
 template<int D>

@@ -87,8 +87,9 @@ void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<
                      rw<vector<D>> v, rw<vector<D>> v_half, rw<double> u, rw<double> u_half, ro<vector<D>> acceleration,
                      ro<double> du_dt, ro<double> velocity_divergence, rw<double> rho, rw<double> h,
                      rw<vector<D>> impulse, rw<double> work, rw<double> drift, rw<std::int32_t> time_bin,
-                     rw<std::int64_t> step_begin, rw<std::int64_t> step_end) {
+                     rw<std::int64_t> step_begin, rw<std::int64_t> step_end, rw<double> P_bar) {
   const double dt = clock.duration(clock.next - clock.now), half_dt = 0.5 * dt;
+  const bool smoothed_pressure = P_bar.data() != nullptr;
   flecsi_lite::forall(
     x.size(),
     [&](std::size_t a) {
@@ -110,6 +111,7 @@ void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<
       drift_by<D>(dt, v_half(a), space, x(a), drift(a));
       const double since_middle = clock.duration(clock.next - step_begin(a)) - 0.5 * length;
       for (int k = 0; k < D; ++k) v(a)[k] = v_half(a)[k] + since_middle * acc[k];
+      const double u_before = u(a);
       u(a) = u_half(a) + since_middle * du_dt(a);
       if (step_end(a) == clock.next) return;  // active at next: its density is computed there
       // Inactive: rho and h follow the flow's compression (drho/dt = -rho div v, h ~ rho^(-1/D)),
@@ -117,6 +119,9 @@ void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<
       const double stretch = std::clamp(dt * velocity_divergence(a), -0.5, 0.5);
       rho(a) *= std::exp(-stretch);
       if (adaptive_h) h(a) *= std::exp(stretch / D);
+      // Pressure-energy: P_bar follows rho and the particle's own u (SWIFT's PressureEnergy
+      // drift): the neighbours' new u would need another pass over them.
+      if (smoothed_pressure) P_bar(a) *= std::exp(-stretch) * (u_before > 0 ? u(a) / u_before : 1.0);
     },
     "sph::kick_drift_bins");
 }
@@ -358,7 +363,8 @@ void first_kick_and_drift_bins(simulation<D>& s) {
     s.clock, p.space(), s.physics.adaptive_smoothing_length, f::kind(p), f::position()(p), f::velocity(p),
     f::velocity_half(p), f::internal_energy(p), f::internal_energy_half(p), f::acceleration(p),
     f::internal_energy_rate(p), f::velocity_divergence(p), f::density(p), f::smoothing_length()(p),
-    f::boundary_impulse(p), f::boundary_work(p), f::drift(p), f::time_bin(p), f::step_begin(p), f::step_end(p));
+    f::boundary_impulse(p), f::boundary_work(p), f::drift(p), f::time_bin(p), f::step_begin(p), f::step_end(p),
+    f::smoothed_pressure(p).only_if(s.physics.pressure_energy()));
 }
 
 template<int D>

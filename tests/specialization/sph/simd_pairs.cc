@@ -1,6 +1,6 @@
 // The SIMD pair loops (physics/simd.hh) against the same loops on one double lane: for every
 // particle of jittered, moving lattices in 1D, 2D and 3D, with each kernel, the force sums (with
-// and without conductivity and the grad-h gravity term) and the density sums (at h and at grown
+// and without conductivity, the grad-h gravity term and pressure-energy) and the density sums (at h and at grown
 // and shrunk h, so that the kernel's edge falls inside the lists) are bitwise equal: the striped
 // sums (simd::striped_sum) add each list entry to the same stripe whatever the lane count. The physics
 // of the single lane is checked against direct sums in forces.cc and density.cc.
@@ -34,17 +34,17 @@ struct comparison {
   }
 };
 
-template<class Kernel, bool Conductivity, bool GradHGravity, int D>
+template<class Kernel, bool Conductivity, bool GradHGravity, bool PressureEnergy, int D>
 void compare_forces(const sph::neighbour_walk<D>& walk, std::size_t owned, const sph::detail::force_fields<D>& in,
                     comparison& result) {
   const flecsph::physics::viscosity_parameters viscosity{1.0, 2.0, 0.01};
   for (std::size_t a = 0; a < owned; ++a) {
     sph::vector<D> dv_lanes, dv_one;
     double du_lanes, du_one, signal_lanes, signal_one;
-    sph::detail::force_sums<Kernel, Conductivity, GradHGravity, D, simd::pack>(walk, a, in, viscosity, 0.7, dv_lanes,
-                                                                               du_lanes, signal_lanes);
-    sph::detail::force_sums<Kernel, Conductivity, GradHGravity, D, double>(walk, a, in, viscosity, 0.7, dv_one, du_one,
-                                                                           signal_one);
+    sph::detail::force_sums<Kernel, Conductivity, GradHGravity, PressureEnergy, D, simd::pack>(
+      walk, a, in, viscosity, 0.7, dv_lanes, du_lanes, signal_lanes);
+    sph::detail::force_sums<Kernel, Conductivity, GradHGravity, PressureEnergy, D, double>(walk, a, in, viscosity, 0.7,
+                                                                                           dv_one, du_one, signal_one);
     for (int k = 0; k < D; ++k) result.add(dv_lanes[k], dv_one[k]);
     result.add(du_lanes, du_one);
     result.add(signal_lanes, signal_one);
@@ -70,12 +70,18 @@ void compare_density(const sph::neighbour_walk<D>& walk, std::size_t owned, cons
 template<int D, template<int> class Kernel>
 void compare_kernel(const sph::neighbour_walk<D>& walk, std::size_t owned, sph::detail::force_fields<D> in,
                     comparison& forces, comparison& density) {
-  compare_forces<Kernel<D>, false, false, D>(walk, owned, in, forces);
-  compare_forces<Kernel<D>, true, false, D>(walk, owned, in, forces);
+  compare_forces<Kernel<D>, false, false, false, D>(walk, owned, in, forces);
+  compare_forces<Kernel<D>, true, false, false, D>(walk, owned, in, forces);
+  {
+    sph::detail::force_fields<D> pressure_energy = in;
+    pressure_energy.gamma_minus_one = 0.4;
+    pressure_energy.pressure_grad_h = in.P;  // any field: the terms' arithmetic is what is compared
+    compare_forces<Kernel<D>, true, false, true, D>(walk, owned, pressure_energy, forces);
+  }
   if constexpr (D == 3) {
     in.half_G = 0.35;
     in.zeta_over_omega = in.balsara;  // any field: the term's arithmetic is what is compared
-    compare_forces<Kernel<D>, true, true, D>(walk, owned, in, forces);
+    compare_forces<Kernel<D>, true, true, false, D>(walk, owned, in, forces);
   }
   compare_density<Kernel<D>, D>(walk, owned, in.x, in.m, in.h, density);
 }
