@@ -27,6 +27,14 @@ set(FLECSPH_TEST_ENVIRONMENT
   OMP_WAIT_POLICY=passive
   OMPI_MCA_btl_vader_single_copy_mechanism=none
   OMPI_MCA_rmaps_base_oversubscribe=1)
+# Open MPI 4's start-up waits, not works: a singleton (an app run without mpiexec, as the fuzz and
+# file tests run hundreds) spent 0.54 s in MPI_Init, 0.11-0.15 s without its daemon (isolated),
+# the network transports it probes (tcp, openib, ofi) and the UCX layer; mpiexec -n 2 0.53-0.63 s
+# against 0.32-0.39 s. The tests run on one node, where shared memory (vader) is the transport
+# used anyway. fuzz.inputs' first 120 cases: 28 s against 12 s (docs/performance.md, "Stop 45").
+if(_flecsph_mpiexec_version MATCHES "(Open MPI|OpenRTE)\\) 4\\.")
+  list(APPEND FLECSPH_TEST_ENVIRONMENT OMPI_MCA_ess_singleton_isolated=1 OMPI_MCA_btl=self,vader OMPI_MCA_pml=ob1)
+endif()
 
 add_library(flecsph_test_main OBJECT ${PROJECT_SOURCE_DIR}/tests/support/test_main.cc)
 target_link_libraries(flecsph_test_main PUBLIC flecsi_lite::flecsi_lite Catch2::Catch2)

@@ -71,24 +71,7 @@ class group_walk {
   /// Neighbour lists of all targets, written as `layout` says (by default: one row per
   /// particle, tree indices, separate shift codes when the domain is periodic).
   void find_neighbours(const hashed_tree<D>& tree, const domain<D>& space, neighbour_lists& out,
-                       const list_layout& layout = {}) {
-    const auto kind = neighbour_list_builder::entries_for(layout, space.any_periodic(), tree.size());
-    const std::size_t* rename = layout.rename;
-    const auto shifts = space.shift_table();
-    const auto prepare = [&](std::size_t chunks) {
-      builder_.start(rename ? layout.rows : tree.size(), chunks, out, kind);
-    };
-    do {  // twice when a chunk outgrew its region (neighbour_list_builder)
-      run(tree, space, prepare, [&](std::size_t chunk, workspace& work, auto interaction_kind, auto periodic) {
-        auto& part = builder_[chunk];
-        walk_group<decltype(interaction_kind)::value, decltype(periodic)::value>(
-          tree, shifts, space.allowed_shifts(), work,
-          [&](std::size_t a, std::size_t count, const auto& neighbour, const auto& shift) {
-            part.append(rename ? rename[a] : a, count, neighbour, shift, rename, kind);
-          });
-      });
-    } while (!builder_.finish(out, kind));
-  }
+                       const list_layout& layout = {});
 
   /// Searches for lists that walked twice (their lists outgrew the room of the previous ones).
   std::size_t repeated_list_passes() const { return builder_.repeated_passes(); }
@@ -166,26 +149,7 @@ class group_walk {
   }
 
   // Step 1 (FIND_NODES): the groups, by a depth-first descent in key order.
-  void find_groups(const hashed_tree<D>& tree) {
-    groups_.clear();
-    if (tree.size() == 0) return;
-    std::vector<std::uint32_t>& stack = group_stack_;
-    stack.assign(1, 0);
-    while (!stack.empty()) {
-      const std::uint32_t index = stack.back();
-      stack.pop_back();
-      const tree_node<D>& node = tree.node(index);
-      const bool small = node.size() <= grouping_.max_group_size ||
-                         (grouping_.max_group_mass > 0 && node.mass <= grouping_.max_group_mass);
-      const bool compact = grouping_.max_group_extent <= 0 ||
-                           node.bounds.max_extent() <= grouping_.max_group_extent * search_.support * node.h_max;
-      if (node.is_leaf() || (small && compact)) {
-        groups_.push_back(index);
-        continue;
-      }
-      for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) stack.push_back(c);
-    }
-  }
+  void find_groups(const hashed_tree<D>& tree);
 
   // Steps 2 and 3 (INTERACTION_LIST, APPLY_SUB_TREE) for the group work.group: calls
   // emit(a, count, neighbour, shift) once for every target a of the group, whose neighbours

@@ -15,6 +15,7 @@
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace flecsi_lite::topology::ntree {
@@ -56,64 +57,24 @@ class hashed_tree {
  public:
   static constexpr std::uint32_t npos = node_table::npos;
 
+  /// Decides whether a node (below the deepest level) is split, from its key, level and range.
+  using split_rule = std::function<bool(const tree_node<D>&)>;
+
   /// Builds the tree of n particles sorted by (key, id): `keys` are their full-depth keys,
-  /// `x`, `m`, `h` their positions, masses and smoothing lengths.
+  /// `x`, `m`, `h` their positions, masses and smoothing lengths. A node with more than
+  /// options.bucket_size particles is split.
   void build(const key_type* keys, const point<D>* x, const double* m, const double* h, std::size_t n,
-             const tree_options& options = {}) {
-    const std::size_t bucket = options.bucket_size;
-    build(keys, x, m, h, n, options, [bucket](const tree_node<D>& node) { return node.size() > bucket; });
-  }
+             const tree_options& options = {});
 
   /// The same with the split decision given: a node (below the deepest level) is split when
-  /// `split(node)` is true, called with its key, level and range here. The distributed gravity
-  /// tree decides so by the global count of a node whose particles straddle ranks.
-  template<class SplitRule>
+  /// `split(node)` is true. The distributed gravity tree decides so by the global count of a node
+  /// whose particles straddle ranks.
   void build(const key_type* keys, const point<D>* x, const double* m, const double* h, std::size_t n,
-             const tree_options& options, const SplitRule& split) {
-    assert(options.bucket_size >= 1);
-    assert(n < npos);
-#ifndef NDEBUG
-    for (std::size_t i = 0; i < n; ++i) assert(level<D>(keys[i]) == max_level<D>);
-    for (std::size_t i = 1; i < n; ++i) assert(keys[i - 1] <= keys[i]);
-#endif
-    options_ = options;
-    nodes_.clear();
-    level_begin_.assign(1, 0);
-    tree_node<D> root;
-    root.end = static_cast<std::uint32_t>(n);
-    nodes_.push_back(root);
-    for (std::size_t first = 0, last = 1; first < last;) {
-      level_begin_.push_back(static_cast<std::uint32_t>(last));
-      const std::size_t added = split_level(keys, first, last, split);
-      first = last;
-      last += added;
-    }
-    // The last pass found no children; the begin it pushed is the end of the deepest level.
-
-    table_.build(nodes_.size(), [this](std::size_t i) { return nodes_[i].key; });
-    refit(x, m, h);
-  }
+             const tree_options& options, const split_rule& split);
 
   /// Recomputes the bottom-up quantities (bounds, h_max, mass, centre, quadrupole) from new
   /// particle data, keeping the structure: valid for the same particles in the same order.
-  void refit(const point<D>* x, const double* m, const double* h) {
-    x_ = x;
-    m_ = m;
-    h_ = h;
-    quadrupoles_.assign(options_.quadrupole ? nodes_.size() : 0, quadrupole<D>::Zero());
-    search_nodes_.resize(nodes_.size());
-    // Levels of few nodes are done in place: a parallel loop costs a fork and a join, which on
-    // a loaded machine can wait for a thread that is not running.
-    constexpr std::size_t parallel_level_size = 1024;
-    for (int l = depth(); l >= 0; --l) {
-      if (level_size(l) < parallel_level_size) {
-        for (std::uint32_t i = level_begin_[l]; i < level_begin_[l + 1]; ++i) compute_node(i);
-      } else {
-        flecsi_lite::forall(
-          level_size(l), [this, l](std::size_t i) { compute_node(level_begin_[l] + i); }, "ntree::hashed_tree::refit");
-      }
-    }
-  }
+  void refit(const point<D>* x, const double* m, const double* h);
 
   /// Number of particles.
   std::size_t size() const { return nodes_.empty() ? 0 : nodes_[0].end; }
@@ -153,81 +114,9 @@ class hashed_tree {
   std::size_t level_size(int l) const { return level_begin_[l + 1] - level_begin_[l]; }
 
   // Splits the nodes [first, last) (one level) and appends their children; returns how many.
-  template<class SplitRule>
-  std::size_t split_level(const key_type* keys, std::size_t first, std::size_t last, const SplitRule& split) {
-    constexpr unsigned children = children_per_cell<D>;
-    const std::size_t count = last - first;
-    child_begin_.resize(count * (children + 1));
-    child_offset_.resize(count);
-    flecsi_lite::forall(
-      count,
-      [&](std::size_t i) {
-        const tree_node<D>& parent = nodes_[first + i];
-        std::uint32_t* bound = child_begin_.data() + i * (children + 1);
-        std::uint32_t nonempty = 0;
-        if (parent.level < max_level<D> && split(parent)) {
-          // Particles of child c are those whose key has child(parent.key, c) as prefix; sorted
-          // keys make each such range contiguous, found by binary search on the shifted prefix.
-          const int below = D * (max_level<D> - parent.level - 1);
-          bound[0] = parent.begin;
-          for (unsigned c = 1; c < children; ++c) {
-            const key_type first_key = child<D>(parent.key, c) << below;
-            bound[c] =
-              static_cast<std::uint32_t>(std::lower_bound(keys + bound[c - 1], keys + parent.end, first_key) - keys);
-          }
-          bound[children] = parent.end;
-          for (unsigned c = 0; c < children; ++c) nonempty += bound[c + 1] > bound[c];
-        }
-        child_offset_[i] = nonempty;
-      },
-      "ntree::hashed_tree::split");
-    const std::size_t added = flecsi_lite::exclusive_scan(child_offset_.data(), count, "ntree::hashed_tree::offsets");
-    nodes_.resize(last + added);
-    flecsi_lite::forall(
-      count,
-      [&](std::size_t i) {
-        tree_node<D>& parent = nodes_[first + i];
-        const std::uint32_t next = i + 1 < count ? child_offset_[i + 1] : static_cast<std::uint32_t>(added);
-        parent.first_child = static_cast<std::uint32_t>(last + child_offset_[i]);
-        parent.child_count = static_cast<std::uint8_t>(next - child_offset_[i]);
-        if (parent.is_leaf()) return;
-        const std::uint32_t* bound = child_begin_.data() + i * (children + 1);
-        std::uint32_t at = parent.first_child;
-        for (unsigned c = 0; c < children; ++c) {
-          if (bound[c + 1] == bound[c]) continue;
-          tree_node<D>& node = nodes_[at++];
-          node = tree_node<D>{};
-          node.key = child<D>(parent.key, c);
-          node.begin = bound[c];
-          node.end = bound[c + 1];
-          node.level = static_cast<std::uint8_t>(parent.level + 1);
-        }
-      },
-      "ntree::hashed_tree::link");
-    return added;
-  }
-
-  // Bottom-up quantities of one node; its children are already done. The sums are the shared
-  // ones of detail/node_moments.hh (the distributed gravity tree computes its top nodes with them).
-  void compute_node(std::size_t index) {
-    tree_node<D>& node = nodes_[index];
-    quadrupole<D>* q = quadrupoles_.empty() ? nullptr : &quadrupoles_[index];
-    if (node.is_leaf()) {
-      detail::compute_leaf_moments<D>(node, x_, m_, h_, q);
-    } else {
-      detail::compute_parent_moments<D>(node, nodes_.data(), q ? quadrupoles_.data() : nullptr, q);
-    }
-    search_node<D>& compact = search_nodes_[index];
-    for (int k = 0; k < D; ++k) {
-      compact.lo[k] = float_below(node.bounds.lo[k]);
-      compact.hi[k] = float_above(node.bounds.hi[k]);
-    }
-    compact.h_max = float_above(node.h_max);
-    compact.begin = node.begin;
-    compact.end = node.end;
-    compact.first_child = node.first_child;
-    compact.child_count = node.child_count;
-  }
+  std::size_t split_level(const key_type* keys, std::size_t first, std::size_t last, const split_rule& split);
+  // Bottom-up quantities of one node; its children are already done.
+  void compute_node(std::size_t index);
 
   tree_options options_;
   std::vector<tree_node<D>> nodes_;
@@ -243,7 +132,7 @@ class hashed_tree {
   std::vector<std::uint32_t> child_offset_;
 };
 
-// Compiled once per dimension in hashed_tree.cc.
+// Compiled once per dimension in hashed_tree.cc, where build and refit are defined.
 extern template class hashed_tree<1>;
 extern template class hashed_tree<2>;
 extern template class hashed_tree<3>;
