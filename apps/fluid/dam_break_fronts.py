@@ -5,7 +5,7 @@ of TrixiParticles.jl (trixi_dam_break_reference_400.txt) and the experiment of M
 (1952, Table 2: martin_moyce_1952_table2.txt). The checks (tests/validation) and the plots use
 these functions and nothing else.
 
-    dam_break_fronts.py reference RUN.gauges.csv [--tank-length 5.366]      # Lobovsky/Marrone geometry
+    dam_break_fronts.py reference RUN.gauges.csv [RUN2 ...] [--tank-length 5.366]   # Lobovsky/Marrone geometry
     dam_break_fronts.py martin-moyce RUN.gauges.csv [RUN2.gauges.csv ...]   # the 1 x 2 column
     dam_break_fronts.py change COARSE.gauges.csv FINE.gauges.csv [FINER.gauges.csv]   # the 1 x 2 column
     dam_break_fronts.py lead RUN.gauges.csv [--raw-bound 0.16]              # raw error against the lead
@@ -60,6 +60,11 @@ def reference_front():
     return data[:, 0] * math.sqrt(G / H), (data[:, 1] + 0.5 * REFERENCE_DX) / H
 
 
+def reference_curve(run):
+    """(T = t sqrt(g/H), x_f / H) of a run in the Marrone / Lobovsky geometry (length = H)."""
+    return run["t"] * math.sqrt(run.g / run.length), run["front_x"] / run.length
+
+
 def arrival(T, x, wall):
     """The first T at which the front x reaches `wall` (linear between rows), or nan."""
     above = np.nonzero(x >= wall)[0]
@@ -76,8 +81,7 @@ def against_reference(run, tank_length=5.366, window=(1.0, 2.3)):
     x_f / 2H, the run's wall arrival, the reference's). Arrival: the front within dx/2 of the far
     wall (the last particle's centre within one spacing), each with its own dx."""
     H = run.length
-    T = run["t"] * math.sqrt(run.g / H)
-    x = run["front_x"] / H
+    T, x = reference_curve(run)
     T_ref, x_ref = reference_front()
     keep = (T_ref >= window[0]) & (T_ref <= window[1])
     if T[-1] < window[1]:
@@ -122,13 +126,21 @@ def front_change(coarse, fine, window=(1.0, 2.8)):
     and at Martin & Moyce's nine points (largest)."""
     T_c, Z_c = martin_moyce_curve(coarse)
     T_f, Z_f = martin_moyce_curve(fine)
+    mean, largest = relative_change(T_c, Z_c, T_f, Z_f, window)
+    T_exp, _ = martin_moyce_points(*window)
+    at_points = np.abs(np.interp(T_exp, T_f, Z_f) - np.interp(T_exp, T_c, Z_c)) / np.interp(T_exp, T_c, Z_c)
+    return mean, largest, float(at_points.max())
+
+
+def relative_change(T_c, x_c, T_f, x_f, window):
+    """The relative difference of a front between a coarser (T_c, x_c) and a finer (T_f, x_f) run at
+    the finer run's rows in `window` of T, the coarser one linear between rows: (mean, largest)."""
     if min(T_c[-1], T_f[-1]) < window[1]:
         sys.exit("dam_break_fronts: a run ends before T = %.2f" % window[1])
     keep = (T_f >= window[0]) & (T_f <= window[1])
-    change = np.abs(Z_f[keep] - np.interp(T_f[keep], T_c, Z_c)) / np.interp(T_f[keep], T_c, Z_c)
-    T_exp, _ = martin_moyce_points(*window)
-    at_points = np.abs(np.interp(T_exp, T_f, Z_f) - np.interp(T_exp, T_c, Z_c)) / np.interp(T_exp, T_c, Z_c)
-    return float(change.mean()), float(change.max()), float(at_points.max())
+    coarse = np.interp(T_f[keep], T_c, x_c)
+    change = np.abs(x_f[keep] - coarse) / coarse
+    return float(change.mean()), float(change.max())
 
 
 def delayed_raw_errors(T, Z, delay, T_exp, Z_exp):
@@ -282,6 +294,7 @@ def main():
                     coarse.length / coarse.dx, fine.length / fine.dx, b[T][0] / a[T][0] - 1,
                     " ".join("%+.4f" % (z / w - 1) for z, w in zip(b[T][1], a[T][1]))))
         return
+    previous = None
     for path in args.runs:
         run = GaugeFile(path)
         if args.against == "reference":
@@ -289,6 +302,11 @@ def main():
             print("%s: dx = H/%.0f, front x_f/2H over %g <= t sqrt(g/H) <= %g against TrixiParticles H/400: "
                   "mean relative error %.4f, largest %.4f; wall arrival t sqrt(g/H) = %.3f (reference %.3f)" %
                   (path, run.length / run.dx, args.window[0], args.window[1], mean, largest, mine, theirs))
+            if previous is not None:
+                print("  front change from H/%.0f: mean %.4f, largest %.4f" % (
+                    previous.length / previous.dx, *relative_change(*reference_curve(previous), *reference_curve(run),
+                                                                    tuple(args.window))))
+            previous = run
         elif args.against == "lead":
             best, rows = lead_table(run, np.arange(0.10, 0.3001, 0.025))
             print("%s: dx = L/%.0f, best delay %.3f. Raw errors against the lead s of the run over the experiment:" %
