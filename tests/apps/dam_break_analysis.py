@@ -4,6 +4,7 @@ synthetic data whose answers are known in closed form (docs/fluid-flow.md, "the 
 - lead_table / lead_at_raw_bound: a run that is Martin & Moyce's Table 2 advanced by 0.2 in T has its
   best delay at 0.2; there its Table 2 errors are those of the model (the experiment = the run delayed
   by the lead), and at the inverted lead the largest raw error is the bound;
+- relative_change: a finer front ahead of the coarser by a known fraction gives that fraction back;
 - observed_order: changes C (n0^-p - n1^-p), C (n1^-p - n2^-p) give back p and C (n2^-p - (2 n2)^-p);
 - surface_front: a block of lattice water ends at its last particle plus half a spacing at any height,
   and moves with the particles by fractions of a spacing (the front operator moves by whole particles);
@@ -65,6 +66,13 @@ with tempfile.TemporaryDirectory() as directory:
         lead = fronts.lead_at_raw_bound(run, 0.16, model)
         reached = fronts.lead_table(run, [lead])[1][0][2 if model else 4]
         expect(abs(reached - 0.16) < 1e-6, "inverted lead %.4f gives the raw bound: %.6f" % (lead, reached))
+
+T_c, T_f = np.linspace(0.0, 3.0, 301), np.linspace(0.0, 3.0, 1001)  # the finer run has more rows
+scale = np.linspace(0.01, 0.02, T_f.size)  # the finer front ahead by 1% at T = 0, 2% at T = 3
+mean, largest = fronts.relative_change(T_c, 1.0 + T_c ** 2, T_f, (1.0 + scale) * (1.0 + T_f ** 2), (1.0, 2.3))
+expect(abs(mean - 0.01 * (1 + 1.65 / 3)) < 1e-4 and abs(largest - 0.01 * (1 + 2.3 / 3)) < 1e-4,
+       "relative change of a front 1%% + T/3 %% ahead over [1, 2.3]: mean %.5f (exact %.5f), largest %.5f (exact "
+       "%.5f)" % (mean, 0.01 * (1 + 1.65 / 3), largest, 0.01 * (1 + 2.3 / 3)))
 
 n, p, C = (20.0, 50.0, 100.0), 0.7, 3.0
 changes = [C * (n[0] ** -p - n[1] ** -p), C * (n[1] ** -p - n[2] ** -p)]
