@@ -3,13 +3,16 @@
 Lobovsky et al.'s sensors 1 and 2, dam_break_lobovsky.par), in t sqrt(g/H) and p / (rho0 g H):
 the onset at sensor 2 (the first p > 0.1 rho0 g H, linear between rows) and the first peak at each
 sensor (the largest p within 0.5 of t sqrt(g/H) after the onset at sensor 2), read raw (every row),
-averaged over the acoustic ringing period that follows the impact, and averaged over 0.01; against
+averaged over the acoustic ringing period that follows the impact, averaged over 0.01, and read as the
+experiment's 20 kHz recorder would (point samples or samples of the 50 us average, at random phase); the
+first peak's width at half maximum and the mean pressure over 0.1 after the onset; against
 the experiment's statistics (Lobovsky et al. 2014 Table 2, lobovsky_2014_pressure.txt: median and
 2.5-97.5% band of the first peak over 100 repetitions) and TrixiParticles' converged H/400 sensors
 (trixi_dam_break_reference_400.txt). The bounds are the issue's (issue 35 item 6); the later plateau
 and second peak are plotted (plot_dam_break_validation.py pressure), not bounded.
 
     dam_break_pressure.py RUN.gauges.csv [--check | --check-onset]
+    dam_break_pressure.py --series S1.dat S2.dat      # t sqrt(g/H), p / (rho g H) at sensors 1 and 2
 """
 import argparse
 import math
@@ -105,29 +108,73 @@ def point_samples(T, p1, p2, interval=0.01):
     return at(0.0), [min(p[k] for p in phases) for k in (1, 2)], [max(p[k] for p in phases) for k in (1, 2)]
 
 
+def sampled_peaks(T, p1, p2, interval, integrate=True, phases=1000, seed=2014):
+    """The first peaks as a recorder sampling every `interval` reads them (Lobovsky et al. 2014: 20 kHz):
+    each series first averaged over one interval centred on each row when `integrate` (a sensor that
+    integrates over its sampling time; without it, point samples), then read at phase + k interval,
+    linear between rows, for `phases` phases drawn uniformly in [0, interval) with a fixed seed (the
+    experiment's clock is not tied to the impact). Returns, per sensor, the median, 2.5% and 97.5%
+    percentiles of the first peak over the phases."""
+    if integrate:
+        p1, p2 = (np.nan_to_num(running_mean(T, p, interval)) for p in (p1, p2))
+    peaks = []
+    for phase in np.random.default_rng(seed).uniform(0, interval, phases):
+        grid = np.arange(T[0] + phase, T[-1], interval)
+        _, peak1, peak2 = first_impact(grid, np.interp(grid, T, p1), np.interp(grid, T, p2))
+        peaks.append((peak1, peak2))
+    peaks = np.array(peaks)
+    return [tuple(np.percentile(peaks[:, k], (50, 2.5, 97.5))) for k in (0, 1)]
+
+
+def peak_shape(T, p, onset, span=0.1):
+    """The first peak's duration and what a slow sensor would read: its full width at half maximum (the
+    rows around the largest p within [onset - 0.05, onset + 0.5] that stay above half of it), and the
+    mean p over [onset, onset + span] (trapezoid rule)."""
+    window = np.nonzero((T >= onset - 0.05) & (T <= onset + 0.5))[0]
+    top = window[np.argmax(p[window])]
+    first, last = top, top
+    while first > window[0] and p[first - 1] > 0.5 * p[top]:
+        first -= 1
+    while last < window[-1] and p[last + 1] > 0.5 * p[top]:
+        last += 1
+    grid = np.linspace(onset, onset + span, 2001)
+    return float(T[last] - T[first]), float(np.trapz(np.interp(grid, T, p), grid) / span)
+
+
 def verdict(value, low, high):
     return "inside" if low <= value <= high else ("above" if value > high else "below")
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("run")
+    parser.add_argument("run", nargs="?", help="the fluid app's gauge file")
+    parser.add_argument("--series", nargs=2, metavar=("S1", "S2"),
+                        help="instead of a run: two files of t sqrt(g/H), p / (rho g H) at sensors 1 and 2 (e.g. "
+                             "a repetition of the experiment, docs/fluid-flow.md)")
     checks = parser.add_mutually_exclusive_group()
     checks.add_argument("--check", action="store_true", help="exit 1 unless the issue's bounds hold")
     checks.add_argument("--check-onset", action="store_true",
                         help="exit 1 unless the onset at sensor 2 is within the issue's bound (CI at H/25, whose "
                              "peaks are compared and reported, docs/fluid-flow.md)")
     args = parser.parse_args()
-    run = fronts.GaugeFile(args.run)
-    scale = run.rho0 * run.g * run.length
-    T = run["t"] * math.sqrt(run.g / run.length)
-    p1, p2 = run["p_1"] / scale, run["p_2"] / scale
+    if (args.run is None) == (args.series is None):
+        parser.error("give a gauge file or --series, not both")
+    if args.series:
+        first, second = (np.loadtxt(path, ndmin=2) for path in args.series)
+        T, p1, p2 = first[:, 0], first[:, 1], np.interp(first[:, 0], second[:, 0], second[:, 1])
+        args.run, resolution = " and ".join(args.series), "the series' rows"
+    else:
+        run = fronts.GaugeFile(args.run)
+        scale = run.rho0 * run.g * run.length
+        T = run["t"] * math.sqrt(run.g / run.length)
+        p1, p2 = run["p_1"] / scale, run["p_2"] / scale
+        resolution = "dx = H/%.0f" % (run.length / run.dx)
     onset, peak1, peak2 = first_impact(T, p1, p2)
     experiment = experiment_statistics()
     around = (T >= onset - 0.05) & (T <= onset + 0.5)
     interval = float(np.median(np.diff(T[around]))) if np.count_nonzero(around) > 1 else float("nan")
-    print("%s (dx = H/%.0f): rows every %.2e of t sqrt(g/H) around the impact, the experiment's 20 kHz %.2e: "
-          "the gauge is sampled %s" % (args.run, run.length / run.dx, interval, experiment_interval(),
+    print("%s (%s): rows every %.2e of t sqrt(g/H) around the impact, the experiment's 20 kHz %.2e: "
+          "the gauge is sampled %s" % (args.run, resolution, interval, experiment_interval(),
                                         "coarser" if interval > experiment_interval() else "finer"))
     print("  onset at sensor 2: t sqrt(g/H) = %.3f (bound [%g, %g]: %s)" % (onset, *ONSET, verdict(onset, *ONSET)))
     period = ringing_period(T, (p1, p2), onset)
@@ -144,6 +191,15 @@ def main():
               (k, centre, raw, *bound, verdict(raw, *bound), median, p_low, p_high, verdict(raw, p_low, p_high),
                period, smoothed[k], verdict(smoothed[k], p_low, p_high), averaged[k], sampled[k],
                low[k - 1], high[k - 1]))
+    for integrate, what in ((False, "point samples"), (True, "samples of the average over each interval")):
+        readings = sampled_peaks(T, p1, p2, experiment_interval(), integrate)
+        print("  read as the experiment's 20 kHz recorder (%s, over 1000 random phases): first peak median "
+              "[2.5%%, 97.5%%] %s" % (what, "; ".join("sensor %d %.3f [%.3f, %.3f] (Table 2 median %.3f)" % (
+                  k + 1, *reading, experiment[k + 1][1]) for k, reading in enumerate(readings))))
+    shapes = [peak_shape(T, p, onset) for p in (p1, p2)]
+    print("  first peak's full width at half maximum: sensor 1 %.4f, sensor 2 %.4f of t sqrt(g/H); mean p over "
+          "[onset, onset + 0.1]: sensor 1 %.3f, sensor 2 %.3f rho0 g H" % (shapes[0][0], shapes[1][0], shapes[0][1],
+                                                                          shapes[1][1]))
     reference = np.loadtxt(fronts.REFERENCE)
     H = fronts.REFERENCE_H
     ref = first_impact(reference[:, 0] * math.sqrt(fronts.G / H), reference[:, 2] / (1000 * fronts.G * H),

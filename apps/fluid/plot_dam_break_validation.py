@@ -11,7 +11,11 @@ app's gauge files (gauge_file: the front operator's front_x and the wall gauges)
         with TrixiParticles' H/400 sensors, the experiment's first peak (Lobovsky et al. 2014
         Table 2: median and 2.5-97.5% band over 100 repetitions, lobovsky_2014_pressure.txt) and
         the issue's bounds on the first impact; with --ringing each run also averaged over its
-        acoustic ringing period (dam_break_pressure.py), dashed.
+        acoustic ringing period (dam_break_pressure.py), dashed; with --repetition S1 S2 one
+        repetition of the experiment (grey).
+    plot_dam_break_validation.py lead RUN.gauges.csv ... --out L.png
+        the largest raw error against Martin & Moyce's Table 2 as a function of the lead s of the run
+        over the experiment (dam_break_fronts.py lead), with the issue's raw bound and delay band.
     plot_dam_break_validation.py shapes RUN.h5part --out S.png
         the water at every output time (colour: pressure).
 """
@@ -75,8 +79,10 @@ def plot_fronts(reference_runs, martin_moyce_runs, out):
     fig.tight_layout(); fig.savefig(out, dpi=120)
 
 
-def plot_pressure(runs, out, t_range=(0.0, 8.0), p_max=4.5, ringing=False):
+def plot_pressure(runs, out, t_range=(0.0, 8.0), p_max=4.5, ringing=False, repetition=None):
     fig, axes = plt.subplots(1, 2, figsize=(13, 5))
+    if repetition:  # two files of t sqrt(g/H), p / (rho g H): one repetition of the experiment, sensors 1 and 2
+        repetition = [np.loadtxt(path, ndmin=2) for path in repetition]
     reference = np.loadtxt(fronts.REFERENCE)
     H_ref = fronts.REFERENCE_H
     T_ref = reference[:, 0] * math.sqrt(fronts.G / H_ref)
@@ -85,6 +91,9 @@ def plot_pressure(runs, out, t_range=(0.0, 8.0), p_max=4.5, ringing=False):
     for k, ax in zip((1, 2), axes):
         ax.plot(T_ref, reference[:, 1 + k] / (1000 * fronts.G * H_ref), "k-", lw=1.5,
                 label="TrixiParticles WCSPH H/400 (H = 0.6 m)")
+        if repetition:
+            ax.plot(repetition[k - 1][:, 0], repetition[k - 1][:, 1], "-", color="0.5", lw=1.5,
+                    label="experiment, one repetition (20 kHz, H = 0.3 m)")
         for path in runs:
             run = fronts.GaugeFile(path)
             T = run["t"] * math.sqrt(run.g / run.length)
@@ -111,6 +120,31 @@ def plot_pressure(runs, out, t_range=(0.0, 8.0), p_max=4.5, ringing=False):
     fig.tight_layout(); fig.savefig(out, dpi=120)
 
 
+def plot_lead(runs, out, bound=0.16):
+    """The largest raw error against Martin & Moyce as a function of the run's lead s over the
+    experiment (dam_break_fronts.py lead): each run's curve as if its best delay were s."""
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    leads = np.linspace(0.0, 0.35, 71)
+    ax.axvspan(0.10, 0.30, color="0.92", label="the issue's band for the delay, [0.10, 0.30]")
+    ax.axvspan(0.17, 0.25, color="tab:green", alpha=0.12, label="published leads of converged codes, 0.17-0.25")
+    ax.axhline(100 * bound, color="tab:red", ls=":", label="the issue's raw bound %g%%" % (100 * bound))
+    for path in runs:
+        run = fronts.GaugeFile(path)
+        best, rows = fronts.lead_table(run, leads)
+        rows = np.array(rows)
+        line, = ax.plot(leads, 100 * rows[:, 4], "-", label="%s, against Table 2" % label(run))
+        ax.plot(leads, 100 * rows[:, 2], "--", color=line.get_color(), lw=1,
+                label="  against its own curve delayed by s (no scatter)")
+        ax.plot([best], [100 * np.interp(best, leads, rows[:, 4])], "o", color=line.get_color(),
+                label="  its own lead %.3f" % best)
+    ax.set_xlim(0, 0.35); ax.set_ylim(0, 25)
+    ax.set_xlabel("lead s of the run over the experiment (T = t sqrt(2 g / a))")
+    ax.set_ylabel("largest raw error over 1 <= T <= 2.8 (%)")
+    ax.set_title("Martin & Moyce column: the raw error a lead implies", fontsize=10)
+    ax.legend(fontsize=7, loc="upper left")
+    fig.tight_layout(); fig.savefig(out, dpi=120)
+
+
 def plot_shapes(path, out):
     import h5part_plot
     names = h5part_plot.step_indices(path, "plot_dam_break_validation")
@@ -134,7 +168,7 @@ def plot_shapes(path, out):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("figure", choices=["fronts", "pressure", "shapes"])
+    parser.add_argument("figure", choices=["fronts", "pressure", "lead", "shapes"])
     parser.add_argument("files", nargs="*")
     parser.add_argument("--reference", nargs="*", default=[])
     parser.add_argument("--martin-moyce", nargs="*", default=[])
@@ -142,11 +176,16 @@ def main():
     parser.add_argument("--t-range", nargs=2, type=float, default=[0.0, 8.0], help="pressure: t sqrt(g/H) shown")
     parser.add_argument("--p-max", type=float, default=4.5, help="pressure: the top of the p / (rho0 g H) axis")
     parser.add_argument("--ringing", action="store_true", help="pressure: also each run averaged over its ringing")
+    parser.add_argument("--repetition", nargs=2, metavar=("S1", "S2"),
+                        help="pressure: one repetition of the experiment, t sqrt(g/H) and p / (rho g H) at sensors 1 "
+                             "and 2 (docs/fluid-flow.md: TNL-SPH's copy of Lobovsky et al.'s Fig. 18 series)")
     args = parser.parse_args()
     if args.figure == "fronts":
         plot_fronts(args.reference, args.martin_moyce, args.out)
     elif args.figure == "pressure":
-        plot_pressure(args.files, args.out, args.t_range, args.p_max, args.ringing)
+        plot_pressure(args.files, args.out, args.t_range, args.p_max, args.ringing, args.repetition)
+    elif args.figure == "lead":
+        plot_lead(args.files, args.out)
     else:
         plot_shapes(args.files[0], args.out)
     print("wrote", args.out)

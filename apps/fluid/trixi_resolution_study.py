@@ -4,7 +4,8 @@ N = 40, 80, 400 particles per H) read with this project's operators: the front (
 plus dx/2), the wall arrival of dam_break_fronts.py (the front within dx/2 of the far wall; also
 at the wall and within dx, to show how much the definition moves it), and the first impact of
 dam_break_pressure.py (onset at sensor 2, the largest p within 0.5 after it) on their sensors P1
-and P2, sampled every 0.01 of t sqrt(g/H) as they store them. Prints each file's model (c0, h,
+and P2, sampled every 0.01 of t sqrt(g/H) as they store them; the front's change from one file to
+the next over 1 <= t sqrt(g/H) <= 2.3 (and its observed order for three files). Prints each file's model (c0, h,
 EOS) from its own metadata. The JSON files are not shipped: fetch the repository.
 
     trixi_resolution_study.py validation_reference_wcsph_40.json validation_reference_wcsph_80.json ...
@@ -43,10 +44,18 @@ def study(path):
           (os.path.basename(path), H / dx, fluid["sound_speed"], fluid["sound_speed"] / math.sqrt(fronts.G * H),
            fluid["smoothing_length"] / dx, eos["model"], eos["exponent"], fluid["density_diffusion"].get("delta"),
            arrivals[0], arrivals[1], arrivals[2], onset, peak1, peak2))
+    return H / dx, T, x
 
 
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit(__doc__)
-    for path in sys.argv[1:]:
-        study(path)
+    runs = [study(path) for path in sys.argv[1:]]
+    changes = []
+    for (n_c, T_c, x_c), (n_f, T_f, x_f) in zip(runs[:-1], runs[1:]):
+        changes.append(fronts.relative_change(T_c, x_c, T_f, x_f, (1.0, 2.3)))
+        print("front change from H/%.0f to H/%.0f over 1 <= t sqrt(g/H) <= 2.3: mean %.4f, largest %.4f" %
+              (n_c, n_f, *changes[-1]))
+    if len(runs) == 3:
+        print("observed order of the mean change %.2f" % fronts.observed_order([c[0] for c in changes],
+                                                                               [run[0] for run in runs])[0])
