@@ -231,11 +231,13 @@ void limit_active_bins(std::int64_t now, int levels, ro<particle_kind> kind, ro<
 /// looks from the active particles at their neighbours: from the owned ones' lists (searched
 /// this step with 2 (1 + search_margin) max(h), enough for the h the density grew), and for the
 /// ghost ones from a walk of the local tree (current positions and h: refreshed before) over
-/// them only. Active ones keep their bound (find_neighbour_bins). A minimum: the same in any order.
+/// them only, when some rank has such a ghost (`ghost_sources`, waking_ghost_sources; on one
+/// rank there are no ghosts). Active ones keep their bound (find_neighbour_bins). A minimum: the
+/// same in any order.
 template<int D>
 void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
-                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now, ro_with_ghosts<vector<D>> x,
-                      ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
+                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now, bool ghost_sources,
+                      ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
                       ro_with_ghosts<std::int32_t> time_bin, rw<std::int32_t> neighbour_bin) {
   const std::size_t owned = neighbour_bin.size(), stored = local->size();
   std::int32_t* bound = neighbour_bin.data();
@@ -257,14 +259,27 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
       }
     },
     "sph::find_waking_bins::owned");
-  std::vector<std::uint8_t> ghost_sources(stored);
+  if (!ghost_sources) return;
+  std::vector<std::uint8_t> sources(stored);
   flecsi_lite::forall(
-    stored, [&](std::size_t a) { ghost_sources[a] = a >= owned && step_begin(a) == now; },
-    "sph::find_waking_bins::ghosts");
-  local->for_each_neighbour_of(ghost_sources, tree::interaction::symmetric, physics::kernel_support, space,
+    stored, [&](std::size_t a) { sources[a] = a >= owned && step_begin(a) == now; }, "sph::find_waking_bins::ghosts");
+  local->for_each_neighbour_of(sources, tree::interaction::symmetric, physics::kernel_support, space,
                                [&](std::size_t a, std::size_t b, const auto&) {
                                  if (waits(b)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
                                });
+}
+
+/// How many ghost particles started a step at `now` (the sources of find_waking_bins' tree walk):
+/// a sum over ranks, so that every rank takes the same decision. Without any, the walk and the
+/// refit of the local tree before it are left out (a refit recomputes every node from the
+/// particles, so the next one, before the next search, gives the same tree): on one rank they
+/// were half the refits of an individual-step run and a walk of the tree's groups in every
+/// system step (docs/performance.md, issue 36).
+template<int D>
+double waking_ghost_sources(std::int64_t now, ro_with_ghosts<std::int64_t> step_begin) {
+  double count = 0;
+  for (std::size_t a = step_begin.owned_size(); a < step_begin.size(); ++a) count += step_begin(a) == now;
+  return count;
 }
 
 /// Wakes the inactive particles whose bin exceeds the bound of find_waking_bins + levels: the
@@ -414,10 +429,13 @@ void choose_time_bins(simulation<D>& s, bool advance) {
   flecsi_lite::execute<limit_active_bins<D>>(s.clock.now, levels, f::kind(p), f::neighbour_bin(p), f::time_bin(p),
                                              f::step_begin(p), f::step_end(p));
   if (levels >= 0) {
-    p.refresh_local_tree();  // h as the density left it, ghosts' too
+    const bool ghost_sources =
+      flecsi_lite::reduce<waking_ghost_sources<D>, flecsi_lite::reduction::sum>(s.clock.now, f::step_begin(p)).get() >
+      0;
+    if (ghost_sources) p.refresh_local_tree();  // h as the density left it, ghosts' too
     flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now,
-                                              f::position()(p), f::smoothing_length()(p), f::step_begin(p),
-                                              f::time_bin(p), f::neighbour_bin(p));
+                                              ghost_sources, f::position()(p), f::smoothing_length()(p),
+                                              f::step_begin(p), f::time_bin(p), f::neighbour_bin(p));
     s.woken += flecsi_lite::reduce<wake_bins<D>, flecsi_lite::reduction::sum>(
                  s.clock, levels, f::kind(p), f::neighbour_bin(p), f::acceleration(p), f::internal_energy_rate(p),
                  f::step_begin(p), f::time_bin(p), f::step_end(p), f::velocity_half(p), f::internal_energy_half(p))
