@@ -117,11 +117,13 @@ void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<
       // Inactive: rho and h follow the flow's compression (drho/dt = -rho div v, h ~ rho^(-1/D)),
       // so that active neighbours see them at the current time (GADGET-2, sec. 5; SWIFT's drift).
       const double stretch = std::clamp(dt * velocity_divergence(a), -0.5, 0.5);
-      rho(a) *= std::exp(-stretch);
-      if (adaptive_h) h(a) *= std::exp(stretch / D);
+      // exp(+-0) is exactly 1: the particles at rest (most of a blast's) skip the two calls.
+      const double compression = stretch == 0 ? 1.0 : std::exp(-stretch);
+      rho(a) *= compression;
+      if (adaptive_h) h(a) *= stretch == 0 ? 1.0 : std::exp(stretch / D);
       // Pressure-energy: P_bar follows rho and the particle's own u (SWIFT's PressureEnergy
       // drift): the neighbours' new u would need another pass over them.
-      if (smoothed_pressure) P_bar(a) *= std::exp(-stretch) * (u_before > 0 ? u(a) / u_before : 1.0);
+      if (smoothed_pressure) P_bar(a) *= compression * (u_before > 0 ? u(a) / u_before : 1.0);
     },
     "sph::kick_drift_bins");
 }
