@@ -205,8 +205,12 @@ void find_neighbour_bins(neighbours_ro<D> neighbours, std::int64_t now, ro_with_
     [&](std::size_t a) {
       if (step_end(a) != now) return;
       std::int32_t smallest = time_bin(a);
+      // A neighbour's bin is read before its distance: one that cannot lower the minimum (most
+      // of them, in a smooth flow) needs no separation.
       for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j)
-        if (detail::within_kernel(walk, x, h, a, j)) smallest = std::min(smallest, time_bin(walk.neighbour(j)));
+        if (const std::int32_t bin = time_bin(walk.neighbour(j));
+            bin < smallest && detail::within_kernel(walk, x, h, a, j))
+          smallest = bin;
       neighbour_bin(a) = smallest;
     },
     "sph::find_neighbour_bins");
@@ -255,9 +259,14 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
     owned,
     [&](std::size_t a) {
       if (step_begin(a) != now) return;
+      const std::int32_t bin = time_bin(a);
       for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
         const std::size_t b = walk.neighbour(j);
-        if (waits(b) && detail::within_kernel(walk, x, h, a, j)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
+        // Bounds only fall: one already at or below a's bin stays where it is, and the
+        // separation is left out (a neighbour shared by several active particles). A relaxed
+        // atomic read: another thread may lower the bound meanwhile, which only costs a test.
+        if (waits(b) && bin < __atomic_load_n(&bound[b], __ATOMIC_RELAXED) && detail::within_kernel(walk, x, h, a, j))
+          Kokkos::atomic_fetch_min(&bound[b], bin);
       }
     },
     "sph::find_waking_bins::owned");
