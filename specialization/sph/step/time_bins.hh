@@ -239,15 +239,21 @@ void limit_active_bins(std::int64_t now, int levels, ro<particle_kind> kind, ro<
 /// ghost ones from a walk of the local tree (current positions and h: refreshed before) over
 /// them only, when some rank has such a ghost (`ghost_sources`, waking_ghost_sources; on one
 /// rank there are no ghosts). Active ones keep their bound (find_neighbour_bins). A minimum: the
-/// same in any order.
+/// same in any order. A source whose bin + `levels` does not lie below b's own bin cannot wake b
+/// (wake_bins: b wakes when its bin exceeds the smallest source bin + levels, and then takes that
+/// value, which a source below it gives), so it is left out: b's bound may stay higher, but
+/// wake_bins decides the same and sets the same bins (the bound is read nowhere else).
 template<int D>
 void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
-                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now, bool ghost_sources,
-                      ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
-                      ro_with_ghosts<std::int32_t> time_bin, rw<std::int32_t> neighbour_bin) {
+                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now, int levels,
+                      bool ghost_sources, ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h,
+                      ro_with_ghosts<std::int64_t> step_begin, ro_with_ghosts<std::int32_t> time_bin,
+                      rw<std::int32_t> neighbour_bin) {
   const std::size_t owned = neighbour_bin.size(), stored = local->size();
   std::int32_t* bound = neighbour_bin.data();
   const auto waits = [&](std::size_t b) { return b < owned && step_begin(b) != now; };
+  // Whether a source of bin `bin` can wake the waiting particle b (above).
+  const auto can_wake = [&](std::size_t b, std::int32_t bin) { return time_bin(b) - levels > bin; };
   flecsi_lite::forall(
     owned,
     [&](std::size_t b) {
@@ -265,7 +271,8 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
         // Bounds only fall: one already at or below a's bin stays where it is, and the
         // separation is left out (a neighbour shared by several active particles). A relaxed
         // atomic read: another thread may lower the bound meanwhile, which only costs a test.
-        if (waits(b) && bin < __atomic_load_n(&bound[b], __ATOMIC_RELAXED) && detail::within_kernel(walk, x, h, a, j))
+        if (waits(b) && can_wake(b, bin) && bin < __atomic_load_n(&bound[b], __ATOMIC_RELAXED) &&
+            detail::within_kernel(walk, x, h, a, j))
           Kokkos::atomic_fetch_min(&bound[b], bin);
       }
     },
@@ -276,7 +283,8 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
     stored, [&](std::size_t a) { sources[a] = a >= owned && step_begin(a) == now; }, "sph::find_waking_bins::ghosts");
   local->for_each_neighbour_of(sources, tree::interaction::symmetric, physics::kernel_support, space,
                                [&](std::size_t a, std::size_t b, const auto&) {
-                                 if (waits(b)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
+                                 if (waits(b) && can_wake(b, time_bin(a)))
+                                   Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
                                });
 }
 
@@ -444,7 +452,7 @@ void choose_time_bins(simulation<D>& s, bool advance) {
       flecsi_lite::reduce<waking_ghost_sources<D>, flecsi_lite::reduction::sum>(s.clock.now, f::step_begin(p)).get() >
       0;
     if (ghost_sources) p.refresh_local_tree();  // h as the density left it, ghosts' too
-    flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now,
+    flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now, levels,
                                               ghost_sources, f::position()(p), f::smoothing_length()(p),
                                               f::step_begin(p), f::time_bin(p), f::neighbour_bin(p));
     s.woken += flecsi_lite::reduce<wake_bins<D>, flecsi_lite::reduction::sum>(
