@@ -117,11 +117,13 @@ void kick_drift_bins(timeline clock, tree::domain<D> space, bool adaptive_h, ro<
       // Inactive: rho and h follow the flow's compression (drho/dt = -rho div v, h ~ rho^(-1/D)),
       // so that active neighbours see them at the current time (GADGET-2, sec. 5; SWIFT's drift).
       const double stretch = std::clamp(dt * velocity_divergence(a), -0.5, 0.5);
-      rho(a) *= std::exp(-stretch);
-      if (adaptive_h) h(a) *= std::exp(stretch / D);
+      // exp(+-0) is exactly 1: the particles at rest (most of a blast's) skip the two calls.
+      const double compression = stretch == 0 ? 1.0 : std::exp(-stretch);
+      rho(a) *= compression;
+      if (adaptive_h) h(a) *= stretch == 0 ? 1.0 : std::exp(stretch / D);
       // Pressure-energy: P_bar follows rho and the particle's own u (SWIFT's PressureEnergy
       // drift): the neighbours' new u would need another pass over them.
-      if (smoothed_pressure) P_bar(a) *= std::exp(-stretch) * (u_before > 0 ? u(a) / u_before : 1.0);
+      if (smoothed_pressure) P_bar(a) *= compression * (u_before > 0 ? u(a) / u_before : 1.0);
     },
     "sph::kick_drift_bins");
 }
@@ -203,8 +205,12 @@ void find_neighbour_bins(neighbours_ro<D> neighbours, std::int64_t now, ro_with_
     [&](std::size_t a) {
       if (step_end(a) != now) return;
       std::int32_t smallest = time_bin(a);
+      // A neighbour's bin is read before its distance: one that cannot lower the minimum (most
+      // of them, in a smooth flow) needs no separation.
       for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j)
-        if (detail::within_kernel(walk, x, h, a, j)) smallest = std::min(smallest, time_bin(walk.neighbour(j)));
+        if (const std::int32_t bin = time_bin(walk.neighbour(j));
+            bin < smallest && detail::within_kernel(walk, x, h, a, j))
+          smallest = bin;
       neighbour_bin(a) = smallest;
     },
     "sph::find_neighbour_bins");
@@ -231,15 +237,23 @@ void limit_active_bins(std::int64_t now, int levels, ro<particle_kind> kind, ro<
 /// looks from the active particles at their neighbours: from the owned ones' lists (searched
 /// this step with 2 (1 + search_margin) max(h), enough for the h the density grew), and for the
 /// ghost ones from a walk of the local tree (current positions and h: refreshed before) over
-/// them only. Active ones keep their bound (find_neighbour_bins). A minimum: the same in any order.
+/// them only, when some rank has such a ghost (`ghost_sources`, waking_ghost_sources; on one
+/// rank there are no ghosts). Active ones keep their bound (find_neighbour_bins). A minimum: the
+/// same in any order. A source whose bin + `levels` does not lie below b's own bin cannot wake b
+/// (wake_bins: b wakes when its bin exceeds the smallest source bin + levels, and then takes that
+/// value, which a source below it gives), so it is left out: b's bound may stay higher, but
+/// wake_bins decides the same and sets the same bins (the bound is read nowhere else).
 template<int D>
 void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
-                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now, ro_with_ghosts<vector<D>> x,
-                      ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
-                      ro_with_ghosts<std::int32_t> time_bin, rw<std::int32_t> neighbour_bin) {
+                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now, int levels,
+                      bool ghost_sources, ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h,
+                      ro_with_ghosts<std::int64_t> step_begin, ro_with_ghosts<std::int32_t> time_bin,
+                      rw<std::int32_t> neighbour_bin) {
   const std::size_t owned = neighbour_bin.size(), stored = local->size();
   std::int32_t* bound = neighbour_bin.data();
   const auto waits = [&](std::size_t b) { return b < owned && step_begin(b) != now; };
+  // Whether a source of bin `bin` can wake the waiting particle b (above).
+  const auto can_wake = [&](std::size_t b, std::int32_t bin) { return time_bin(b) - levels > bin; };
   flecsi_lite::forall(
     owned,
     [&](std::size_t b) {
@@ -251,20 +265,40 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
     owned,
     [&](std::size_t a) {
       if (step_begin(a) != now) return;
+      const std::int32_t bin = time_bin(a);
       for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
         const std::size_t b = walk.neighbour(j);
-        if (waits(b) && detail::within_kernel(walk, x, h, a, j)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
+        // Bounds only fall: one already at or below a's bin stays where it is, and the
+        // separation is left out (a neighbour shared by several active particles). A relaxed
+        // atomic read: another thread may lower the bound meanwhile, which only costs a test.
+        if (waits(b) && can_wake(b, bin) && bin < __atomic_load_n(&bound[b], __ATOMIC_RELAXED) &&
+            detail::within_kernel(walk, x, h, a, j))
+          Kokkos::atomic_fetch_min(&bound[b], bin);
       }
     },
     "sph::find_waking_bins::owned");
-  std::vector<std::uint8_t> ghost_sources(stored);
+  if (!ghost_sources) return;
+  std::vector<std::uint8_t> sources(stored);
   flecsi_lite::forall(
-    stored, [&](std::size_t a) { ghost_sources[a] = a >= owned && step_begin(a) == now; },
-    "sph::find_waking_bins::ghosts");
-  local->for_each_neighbour_of(ghost_sources, tree::interaction::symmetric, physics::kernel_support, space,
+    stored, [&](std::size_t a) { sources[a] = a >= owned && step_begin(a) == now; }, "sph::find_waking_bins::ghosts");
+  local->for_each_neighbour_of(sources, tree::interaction::symmetric, physics::kernel_support, space,
                                [&](std::size_t a, std::size_t b, const auto&) {
-                                 if (waits(b)) Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
+                                 if (waits(b) && can_wake(b, time_bin(a)))
+                                   Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
                                });
+}
+
+/// How many ghost particles started a step at `now` (the sources of find_waking_bins' tree walk):
+/// a sum over ranks, so that every rank takes the same decision. Without any, the walk and the
+/// refit of the local tree before it are left out (a refit recomputes every node from the
+/// particles, so the next one, before the next search, gives the same tree): on one rank they
+/// were half the refits of an individual-step run and a walk of the tree's groups in every
+/// system step (docs/performance.md, issue 36).
+template<int D>
+double waking_ghost_sources(std::int64_t now, ro_with_ghosts<std::int64_t> step_begin) {
+  double count = 0;
+  for (std::size_t a = step_begin.owned_size(); a < step_begin.size(); ++a) count += step_begin(a) == now;
+  return count;
 }
 
 /// Wakes the inactive particles whose bin exceeds the bound of find_waking_bins + levels: the
@@ -414,10 +448,13 @@ void choose_time_bins(simulation<D>& s, bool advance) {
   flecsi_lite::execute<limit_active_bins<D>>(s.clock.now, levels, f::kind(p), f::neighbour_bin(p), f::time_bin(p),
                                              f::step_begin(p), f::step_end(p));
   if (levels >= 0) {
-    p.refresh_local_tree();  // h as the density left it, ghosts' too
-    flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now,
-                                              f::position()(p), f::smoothing_length()(p), f::step_begin(p),
-                                              f::time_bin(p), f::neighbour_bin(p));
+    const bool ghost_sources =
+      flecsi_lite::reduce<waking_ghost_sources<D>, flecsi_lite::reduction::sum>(s.clock.now, f::step_begin(p)).get() >
+      0;
+    if (ghost_sources) p.refresh_local_tree();  // h as the density left it, ghosts' too
+    flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now, levels,
+                                              ghost_sources, f::position()(p), f::smoothing_length()(p),
+                                              f::step_begin(p), f::time_bin(p), f::neighbour_bin(p));
     s.woken += flecsi_lite::reduce<wake_bins<D>, flecsi_lite::reduction::sum>(
                  s.clock, levels, f::kind(p), f::neighbour_bin(p), f::acceleration(p), f::internal_energy_rate(p),
                  f::step_begin(p), f::time_bin(p), f::step_end(p), f::velocity_half(p), f::internal_energy_half(p))

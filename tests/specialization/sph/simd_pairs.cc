@@ -2,7 +2,8 @@
 // particle of jittered, moving lattices in 1D, 2D and 3D, with each kernel, the force sums (with
 // and without conductivity, the grad-h gravity term and pressure-energy) and the density sums (at h and at grown
 // and shrunk h, so that the kernel's edge falls inside the lists) are bitwise equal: the striped
-// sums (simd::striped_sum) add each list entry to the same stripe whatever the lane count. The physics
+// sums (simd::striped_sum) add each list entry to the same stripe whatever the lane count. The velocity
+// gradients on packs are bitwise the plain loop over the list that the task ran before them. The physics
 // of the single lane is checked against direct sums in forces.cc and density.cc.
 #include "sph_setup.hh"
 
@@ -67,9 +68,57 @@ void compare_density(const sph::neighbour_walk<D>& walk, std::size_t owned, cons
   }
 }
 
+/// div and the rotation sums of a's list as the gradient task's plain loop added them before the
+/// packs (velocity_gradients.hh): the reference bits.
+template<class Kernel, int D>
+void plain_gradient_sums(const sph::neighbour_walk<D>& walk, std::size_t a, const sph::vector<D>* x,
+                         const sph::vector<D>* v, const double* m, double h_a, double& div, sph::vector<3>& rotation) {
+  const sph::kernel_at<Kernel> kernel_a(h_a);
+  const double reach2 = flecsph::physics::kernel_support * flecsph::physics::kernel_support * h_a * h_a;
+  sph::vector<D> r;
+  for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
+    const std::size_t b = walk.neighbour(j);
+    const double r2 = walk.separation(x[a], x[b], j, r);
+    if (r2 >= reach2 || r2 == 0) continue;
+    const double factor = m[b] * kernel_a.gradient_factor(std::sqrt(r2));
+    sph::vector<3> dv{}, rr{};
+    for (int k = 0; k < D; ++k) {
+      dv[k] = v[a][k] - v[b][k];
+      rr[k] = r[k];
+      div += dv[k] * r[k] * factor;
+    }
+    rotation[0] += (dv[1] * rr[2] - dv[2] * rr[1]) * factor;
+    rotation[1] += (dv[2] * rr[0] - dv[0] * rr[2]) * factor;
+    rotation[2] += (dv[0] * rr[1] - dv[1] * rr[0]) * factor;
+  }
+}
+
+template<class Kernel, int D>
+void compare_gradients(const sph::neighbour_walk<D>& walk, std::size_t owned, const sph::detail::force_fields<D>& in,
+                       comparison& result, std::size_t& nonzero) {
+  for (std::size_t a = 0; a < owned; ++a)
+    for (double factor : {0.9, 1.0, 1.04}) {  // the kernel's edge inside the list
+      const double h_a = factor * in.h[a];
+      const double reach2 = flecsph::physics::kernel_support * flecsph::physics::kernel_support * h_a * h_a;
+      double div_plain = 0, div_curl = 0, div_only = 0;
+      sph::vector<3> rotation_plain{}, rotation_curl{}, rotation_none{};
+      plain_gradient_sums<Kernel, D>(walk, a, in.x, in.v, in.m, h_a, div_plain, rotation_plain);
+      const sph::kernel_at<Kernel> kernel_a(h_a);
+      sph::detail::velocity_gradient_sums<Kernel, D, true>(walk, a, in.x, in.v, in.m, kernel_a, reach2, div_curl,
+                                                           rotation_curl);
+      sph::detail::velocity_gradient_sums<Kernel, D, false>(walk, a, in.x, in.v, in.m, kernel_a, reach2, div_only,
+                                                            rotation_none);
+      result.add(div_curl, div_plain);
+      result.add(div_only, div_plain);
+      for (int k = 0; k < 3; ++k) result.add(rotation_curl[k], rotation_plain[k]);
+      nonzero += div_plain != 0;
+    }
+}
+
 template<int D, template<int> class Kernel>
 void compare_kernel(const sph::neighbour_walk<D>& walk, std::size_t owned, sph::detail::force_fields<D> in,
-                    comparison& forces, comparison& density) {
+                    comparison& forces, comparison& density, comparison& gradients, std::size_t& nonzero) {
+  compare_gradients<Kernel<D>, D>(walk, owned, in, gradients, nonzero);
   compare_forces<Kernel<D>, false, false, false, D>(walk, owned, in, forces);
   compare_forces<Kernel<D>, true, false, false, D>(walk, owned, in, forces);
   {
@@ -116,16 +165,19 @@ void compare_all(bool periodic) {
   in.inverse_h = inverse_h.data();
   const sph::neighbour_walk<D> walk(s.neighbours.host());
   const std::size_t owned = p.owned_size();
-  comparison forces, density;
-  compare_kernel<D, flecsph::physics::cubic_spline>(walk, owned, in, forces, density);
-  compare_kernel<D, flecsph::physics::wendland_c2>(walk, owned, in, forces, density);
-  compare_kernel<D, flecsph::physics::wendland_c4>(walk, owned, in, forces, density);
-  compare_kernel<D, flecsph::physics::wendland_c6>(walk, owned, in, forces, density);
+  comparison forces, density, gradients;
+  std::size_t nonzero_divergences = 0;
+  compare_kernel<D, flecsph::physics::cubic_spline>(walk, owned, in, forces, density, gradients, nonzero_divergences);
+  compare_kernel<D, flecsph::physics::wendland_c2>(walk, owned, in, forces, density, gradients, nonzero_divergences);
+  compare_kernel<D, flecsph::physics::wendland_c4>(walk, owned, in, forces, density, gradients, nonzero_divergences);
+  compare_kernel<D, flecsph::physics::wendland_c6>(walk, owned, in, forces, density, gradients, nonzero_divergences);
   INFO("D = " << D << ", " << simd::lanes<simd::pack> << " lanes, " << owned << " particles");
   CHECK(forces.sums > 0);
   CHECK(density.sums > 0);
   CHECK(forces.different == 0);
   CHECK(density.different == 0);
+  CHECK(nonzero_divergences > 0);  // the lattice moves: the compared sums are not all zero
+  CHECK(gradients.different == 0);
 }
 }  // namespace
 
@@ -137,7 +189,7 @@ TEST_CASE("the build's pair loops run on packs of several lanes", "[sph][simd]")
 #endif
 }
 
-TEST_CASE("force and density sums on packs are bitwise those on one lane", "[sph][simd]") {
+TEST_CASE("force, density and velocity gradient sums on packs are bitwise those on one lane", "[sph][simd]") {
   for (bool periodic : {true, false}) {
     compare_all<1>(periodic);
     compare_all<2>(periodic);
