@@ -1,8 +1,9 @@
 """The square test's last step against its first (apps/square/square_analysis.py): prints the
-corner fill (1: corners kept; a circle of the same area: 0), the fraction of the square's dense
-particles (rho > 3 at the start) still above 3, and their smallest density; exit 1 when the
-squareness (1: square, 0: circle) is below SQUARE, the corner fill below CORNER or the dense
-fraction below DENSE.
+squareness (1: square, 0: circle), the corner cover (the corner boxes' area still the square's;
+1: corners kept; a circle of the same area: 0), the corner fill (reported: the particles still in
+the boxes), the fraction of the square's dense particles (rho > 3 at the start) still above 3, and
+their smallest density; exit 1 when the squareness is below SQUARE, the corner cover below CORNER
+or the dense fraction below DENSE.
 
     check_square.py square.h5part SQUARE CORNER DENSE [--json FILE]
 """
@@ -40,14 +41,14 @@ def main():
     time, now, _ = h5part_plot.read_step(arguments.file, steps[-1], PROGRAM)
     result = square_analysis.measures(first, now, int(h5part_plot.number(attributes, "square_first_id", 0)))
     result["time"] = float(time)
-    passed = result["squareness"] >= arguments.square and result["corner_fill"] >= arguments.corner and result["dense_fraction"] >= arguments.dense
-    result["bounds"] = {"squareness": arguments.square, "corner_fill": arguments.corner, "dense_fraction": arguments.dense}
+    passed = result["squareness"] >= arguments.square and result["corner_cover"] >= arguments.corner and result["dense_fraction"] >= arguments.dense
+    result["bounds"] = {"squareness": arguments.square, "corner_cover": arguments.corner, "dense_fraction": arguments.dense}
     result["pass"] = bool(passed)
-    print("square test at t = %.4g, %d square particles: squareness %.3f (bound %g; square 1, circle 0), corner fill %.3f (bound %g; a circle of the same area "
-          "%.3f; %d corner particles at the start), dense fraction %.3f (bound %g), smallest interior density %.3f, "
+    print("square test at t = %.4g, %d square particles: squareness %.3f (bound %g; square 1, circle 0), corner cover %.3f (bound %g; a circle of the same area "
+          "%.3f), corner fill %.3f (reported; %d corner particles at the start), dense fraction %.3f (bound %g), smallest interior density %.3f, "
           "largest speed %.3g: %s" %
-          (time, result["square_particles"], result["squareness"], arguments.square, result["corner_fill"], arguments.corner, result["circle_corner_fill"],
-           result["corner_particles_at_start"], result["dense_fraction"], arguments.dense,
+          (time, result["square_particles"], result["squareness"], arguments.square, result["corner_cover"], arguments.corner, result["circle_corner_cover"],
+           result["corner_fill"], result["corner_particles_at_start"], result["dense_fraction"], arguments.dense,
            result["interior_minimum_density"], result["largest_speed"], "pass" if passed else "FAIL"))
     if arguments.json:
         with open(arguments.json, "w") as out:
