@@ -271,7 +271,8 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
         // Bounds only fall: one already at or below a's bin stays where it is, and the
         // separation is left out (a neighbour shared by several active particles). A relaxed
         // atomic read: another thread may lower the bound meanwhile, which only costs a test.
-        if (waits(b) && can_wake(b, bin) && bin < __atomic_load_n(&bound[b], __ATOMIC_RELAXED) &&
+        // The bins first: most neighbours' cannot be woken by a, and their step start is not read.
+        if (can_wake(b, bin) && waits(b) && bin < __atomic_load_n(&bound[b], __ATOMIC_RELAXED) &&
             detail::within_kernel(walk, x, h, a, j))
           Kokkos::atomic_fetch_min(&bound[b], bin);
       }
