@@ -156,25 +156,29 @@ def lead_table(run, leads):
     mean, largest, smallest. Rows (s, model mean, model largest, table mean, table largest, table
     smallest)."""
     T, Z = martin_moyce_curve(run)
-    T_exp, Z_exp = martin_moyce_points()
     _, best, _ = against_martin_moyce(run)
-    rows = []
-    for s in leads:
-        delayed = np.interp(T_exp - s, T, Z)  # the "experiment"
-        model = (np.interp(T_exp, T, Z) - delayed) / delayed
-        table = delayed_raw_errors(T, Z, best - s, T_exp, Z_exp)
-        rows.append((s, model.mean(), model.max(), table.mean(), table.max(), table.min()))
-    return best, rows
+    return best, [lead_row(T, Z, best, s) for s in leads]
+
+
+def lead_row(T, Z, best, s):
+    """One row of lead_table for the curve (T, Z) whose best delay against Table 2 is `best`."""
+    T_exp, Z_exp = martin_moyce_points()
+    delayed = np.interp(T_exp - s, T, Z)  # the "experiment"
+    model = (np.interp(T_exp, T, Z) - delayed) / delayed
+    table = delayed_raw_errors(T, Z, best - s, T_exp, Z_exp)
+    return (s, model.mean(), model.max(), table.mean(), table.max(), table.min())
 
 
 def lead_at_raw_bound(run, bound, model):
     """The lead s (see lead_table) at which the largest raw error reaches `bound`, by bisection on
     [0, 1] (the largest raw error grows with the lead); `model` picks the model column."""
     column = 2 if model else 4
+    T, Z = martin_moyce_curve(run)
+    _, best, _ = against_martin_moyce(run)
     low, high = 0.0, 1.0
     for _ in range(50):
         middle = 0.5 * (low + high)
-        if lead_table(run, [middle])[1][0][column] < bound:
+        if lead_row(T, Z, best, middle)[column] < bound:
             low = middle
         else:
             high = middle
