@@ -1,6 +1,7 @@
 """The square test's measures on an output step, shared by plot_square.py and
 tests/validation/check_square.py. The square's particles are those of id >= square_first_id (a
-root attribute of the output): the measures follow the same (Lagrangian) particles.
+root attribute of the output): the measures follow the same (Lagrangian) particles, except the
+corner cover, which measures where the dense phase is, whichever particles hold it.
 
 - corner_cover: the fraction of the area of the four corner boxes of side CORNER (0.05) inside the
   original square's corners whose nearest particle belongs to the dense phase (the square's
