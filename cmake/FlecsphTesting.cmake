@@ -27,13 +27,19 @@ set(FLECSPH_TEST_ENVIRONMENT
   OMP_WAIT_POLICY=passive
   OMPI_MCA_btl_vader_single_copy_mechanism=none
   OMPI_MCA_rmaps_base_oversubscribe=1)
-# Open MPI 4's start-up waits, not works: a singleton (an app run without mpiexec, as the fuzz and
-# file tests run hundreds) spent 0.54 s in MPI_Init, 0.11-0.15 s without its daemon (isolated),
-# the network transports it probes (tcp, openib, ofi) and the UCX layer; mpiexec -n 2 0.53-0.63 s
-# against 0.32-0.39 s. The tests run on one node, where shared memory (vader) is the transport
-# used anyway. fuzz.inputs' first 120 cases: 28 s against 12 s (docs/performance.md, "Stop 45").
+# Open MPI 4's start-up probes network transports (tcp, openib, ofi) and the UCX layer: a
+# singleton (an app run without mpiexec, as the fuzz and file tests run hundreds) spent 0.33 s
+# before main here, 0.12 s on shared memory (vader) and ob1 alone, the transports used on one node
+# anyway. Not isolated singletons (ess_singleton_isolated, 0.04 s): they all share one session
+# directory, which each removes as it ends, and concurrent ones then fail in MPI_Init or in
+# MPI_File_open (validation.rayleigh_taylor.rank_invariance failed so at stop 46; 2 of 160
+# concurrent runs in the stress of docs/performance.md, "Stop 46").
+# When a rank exits non-zero (every bad-input test), mpiexec stops the others with SIGTERM and
+# waits odls_base_sigkill_timeout (1 s) twice before it returns: 2.1 s of each such test's 2.2 s,
+# 116 tests; the suite took 845 slot-seconds with the wait, 400 without (stop 46). The wait buys
+# nothing: no rank of ours handles SIGTERM, so the signal ends it at once.
 if(_flecsph_mpiexec_version MATCHES "(Open MPI|OpenRTE)\\) 4\\.")
-  list(APPEND FLECSPH_TEST_ENVIRONMENT OMPI_MCA_ess_singleton_isolated=1 OMPI_MCA_btl=self,vader OMPI_MCA_pml=ob1)
+  list(APPEND FLECSPH_TEST_ENVIRONMENT OMPI_MCA_btl=self,vader OMPI_MCA_pml=ob1 OMPI_MCA_odls_base_sigkill_timeout=0)
 endif()
 
 add_library(flecsph_test_main OBJECT ${PROJECT_SOURCE_DIR}/tests/support/test_main.cc)

@@ -33,6 +33,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 
 ALLOWED_STATUSES = (0, 2, 3)
 # Address space of one case: a valid but huge run (particles = 4294967296) fails its allocation
@@ -150,6 +151,8 @@ class runner:
         self.options = options
         self.launcher = shlex.split(options.launcher)
         # ess_singleton_isolated: a singleton starts no orted daemon (Open MPI 4; ignored elsewhere).
+        # Isolated singletons share one session directory under TMPDIR and remove it as they end,
+        # so each run gets a TMPDIR of its own (run_once): concurrent cases do not collide.
         self.environment = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false",
                                 OMPI_MCA_ess_singleton_isolated="1")
         self.quiet = ["--set", "progress_every=0", "--set", "diagnostics_every=0", "--no-timers"]
@@ -164,8 +167,12 @@ class runner:
         return status, error
 
     def run_once(self, arguments, folder):
+        with tempfile.TemporaryDirectory(prefix="flecsph-fuzz-mpi-") as session:
+            return self.run_in_session(arguments, folder, dict(self.environment, TMPDIR=session))
+
+    def run_in_session(self, arguments, folder, environment):
         process = subprocess.Popen(self.launcher + arguments, cwd=folder, stdout=subprocess.DEVNULL,
-                                   stderr=subprocess.PIPE, env=self.environment,
+                                   stderr=subprocess.PIPE, env=environment,
                                    preexec_fn=None if self.options.no_limit else limit_address_space,
                                    start_new_session=self.options.no_limit)
         try:

@@ -17,6 +17,7 @@ import os
 import shutil
 import subprocess
 import sys
+import tempfile
 
 import h5py
 import numpy as np
@@ -36,7 +37,10 @@ def main():
     shutil.rmtree(options.work, ignore_errors=True)
     os.makedirs(options.work)
     os.chdir(options.work)
-    environment = dict(os.environ, OMP_NUM_THREADS="1", OMPI_MCA_ess_singleton_isolated="1")
+    # An isolated singleton starts no orted daemon; isolated singletons share one session directory
+    # under TMPDIR and remove it as they end, so this script's runs take one of their own.
+    session = tempfile.TemporaryDirectory(prefix="flecsph-restart-mpi-")
+    environment = dict(os.environ, OMP_NUM_THREADS="1", OMPI_MCA_ess_singleton_isolated="1", TMPDIR=session.name)
     common = ["--set", "progress_every=0", "--set", "diagnostics_every=0", "--no-timers"]
     for assignment in options.set or []:
         common += ["--set", assignment]
