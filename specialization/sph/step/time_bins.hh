@@ -236,8 +236,8 @@ void limit_active_bins(std::int64_t now, int levels, ro<particle_kind> kind, ro<
 /// at `now` (owned or ghosts: what changed bins) within 2 max(h_a, h_b) of it, as SWIFT's limiter
 /// looks from the active particles at their neighbours: from the owned ones' lists (searched
 /// this step with 2 (1 + search_margin) max(h), enough for the h the density grew), and for the
-/// ghost ones from a walk of the local tree (current positions and h: refreshed before) over
-/// them only, when some rank has such a ghost (`ghost_sources`, waking_ghost_sources; on one
+/// ghost ones from a walk of the local tree of this step's search (positions unchanged since; the
+/// sources' new h taken in) over them only, when some rank has such a ghost (`ghost_sources`, waking_ghost_sources; on one
 /// rank there are no ghosts). Active ones keep their bound (find_neighbour_bins). A minimum: the
 /// same in any order. A source whose bin + `levels` does not lie below b's own bin cannot wake b
 /// (wake_bins: b wakes when its bin exceeds the smallest source bin + levels, and then takes that
@@ -282,6 +282,9 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
   std::vector<std::uint8_t> sources(stored);
   flecsi_lite::forall(
     stored, [&](std::size_t a) { sources[a] = a >= owned && step_begin(a) == now; }, "sph::find_waking_bins::ghosts");
+  // The tree is that of this step's search (positions unchanged since); of the particles the walk
+  // acts on, only the sources' h changed (the waiting ones were not active): their h is enough.
+  local->take_smoothing_lengths_of(sources, h.data());
   local->for_each_neighbour_of(sources, tree::interaction::symmetric, physics::kernel_support, space,
                                [&](std::size_t a, std::size_t b, const auto&) {
                                  if (waits(b) && can_wake(b, time_bin(a)))
@@ -290,11 +293,9 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
 }
 
 /// How many ghost particles started a step at `now` (the sources of find_waking_bins' tree walk):
-/// a sum over ranks, so that every rank takes the same decision. Without any, the walk and the
-/// refit of the local tree before it are left out (a refit recomputes every node from the
-/// particles, so the next one, before the next search, gives the same tree): on one rank they
-/// were half the refits of an individual-step run and a walk of the tree's groups in every
-/// system step (docs/performance.md, issue 36).
+/// a sum over ranks, so that every rank takes the same decision. Without any, the walk is left
+/// out (on one rank, before, a refit of the local tree and a walk of its groups in every system
+/// step; docs/performance.md, issue 36).
 template<int D>
 double waking_ghost_sources(std::int64_t now, ro_with_ghosts<std::int64_t> step_begin) {
   double count = 0;
@@ -452,7 +453,6 @@ void choose_time_bins(simulation<D>& s, bool advance) {
     const bool ghost_sources =
       flecsi_lite::reduce<waking_ghost_sources<D>, flecsi_lite::reduction::sum>(s.clock.now, f::step_begin(p)).get() >
       0;
-    if (ghost_sources) p.refresh_local_tree();  // h as the density left it, ghosts' too
     flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now, levels,
                                               ghost_sources, f::position()(p), f::smoothing_length()(p),
                                               f::step_begin(p), f::time_bin(p), f::neighbour_bin(p));

@@ -61,6 +61,28 @@ class local_tree {
     tree_.refit(x_.data(), m_.data(), h_.data());
   }
 
+  /// Takes the new smoothing lengths of the chosen particles only (storage_chosen[a] != 0, one
+  /// byte per stored particle; h a storage array) into the sorted copy; the nodes are not
+  /// refitted. A search from chosen targets then finds, among the particles whose position and h
+  /// have not changed since the last build or refresh, exactly the neighbours it would find after
+  /// a refresh: the nodes' boxes and largest h still bound those particles, and the pair test
+  /// reads each particle's own h. (The time-step limiter wakes waiting particles, whose h did not
+  /// change, from the ghosts that started a step: a refresh of every node for it cost more than
+  /// the walk on 2 ranks; docs/performance.md, "Stop 46".)
+  void take_smoothing_lengths_of(const std::vector<std::uint8_t>& storage_chosen, const double* h) {
+    if (storage_chosen.size() < size())
+      throw std::logic_error("ntree::local_tree: the mask of new smoothing lengths has fewer entries than the tree");
+    const std::size_t* from = sorted_to_storage_.data();
+    const std::uint8_t* chosen = storage_chosen.data();
+    double* sorted_h = h_.data();
+    flecsi_lite::forall(
+      size(),
+      [=](std::size_t s) {
+        if (chosen[from[s]]) sorted_h[s] = h[from[s]];
+      },
+      "ntree::local_tree::take_smoothing_lengths_of");
+  }
+
   const hashed_tree<D>& tree() const { return tree_; }
   std::size_t size() const { return sorted_to_storage_.size(); }
   std::size_t owned_size() const { return owned_; }

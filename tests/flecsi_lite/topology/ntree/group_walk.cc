@@ -3,9 +3,13 @@
 // and in ascending order, for gather and symmetric searches, any group size or mass, some
 // targets only, by callback and as CSR lists.
 #include "flecsi_lite/topology/ntree/search/group_walk.hh"
+#include "flecsi_lite/topology/ntree/search/radius_search.hh"
 #include "tests/flecsi_lite/topology/ntree/search_checks.hh"
 
 #include <catch2/catch.hpp>
+
+#include <random>
+#include <vector>
 
 namespace nt = flecsi_lite::topology::ntree;
 using namespace ntree_test;
@@ -85,6 +89,53 @@ TEST_CASE("group walk on a Plummer sphere with adaptive h", "[ntree][group_walk]
     nt::neighbour_lists again;
     walk.find_neighbours(tree, space, again);
     require_equal(again, found);
+  }
+}
+
+// The time-step limiter's wake-up from ghost sources (specialization/sph/step/time_bins.hh) takes
+// the sources' new h into the tree without a refit (local_tree::take_smoothing_lengths_of) before
+// a group walk from them (local_tree::for_each_neighbour_of): a symmetric search from those
+// targets, grouped or one by one, must then find, among the particles whose h did not change,
+// what it finds after a refit (the brute force with the new h), though the nodes' largest h are
+// stale, lower where a target's h grew and higher where it shrank.
+TEST_CASE("a search from targets whose h changed after the build is exact for the unchanged particles",
+          "[ntree][group_walk]") {
+  const auto space = nt::domain<3>::open();
+  for (auto set : {uniform<3>(3000, 41), gaussian_blobs<3>(3000, 3, 0.02, 43)}) {
+    sort_by_key(set, nt::curve::hilbert);
+    const auto tree = build_tree(set, 16);  // keeps pointers to set.x and set.h
+    std::mt19937_64 random(47);
+    std::uniform_real_distribution<double> factor(0.5, 2.0);
+    std::vector<std::uint8_t> changed(set.size());
+    for (std::size_t a = 0; a < set.size(); ++a)
+      if (random() % 10 == 0) {
+        changed[a] = 1;
+        set.h[a] *= factor(random);
+      }
+    const nt::search_options options{nt::interaction::symmetric, 2.0, changed.data()};
+    const auto expected = brute_force(set, space, options);
+    const auto require_unchanged_equal = [&](const nt::neighbour_lists& found) {
+      REQUIRE(found.size() == expected.size());
+      std::size_t compared = 0;
+      for (std::size_t a = 0; a < set.size(); ++a) {
+        std::vector<std::uint32_t> unchanged_found, unchanged_expected;
+        for (std::size_t j = found.offsets[a]; j < found.offsets[a + 1]; ++j)
+          if (!changed[found.neighbours[j]]) unchanged_found.push_back(found.neighbours[j]);
+        for (std::size_t j = expected.offsets[a]; j < expected.offsets[a + 1]; ++j)
+          if (!changed[expected.neighbours[j]]) unchanged_expected.push_back(expected.neighbours[j]);
+        REQUIRE(unchanged_found == unchanged_expected);
+        compared += unchanged_expected.size();
+      }
+      REQUIRE(compared > set.size());  // about 40 neighbours for each of a tenth of the particles
+    };
+    nt::radius_search<3> per_target(options);
+    require_unchanged_equal(lists_from_callback(per_target, tree, space));
+    for (const std::size_t group_size : {std::size_t(1), std::size_t(32)}) {
+      nt::group_walk<3> walk(options, {group_size, 0});
+      nt::neighbour_lists found;
+      walk.find_neighbours(tree, space, found);
+      require_unchanged_equal(found);
+    }
   }
 }
 
