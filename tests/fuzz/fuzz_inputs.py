@@ -159,8 +159,9 @@ class runner:
 
     def run(self, arguments, folder):
         """(status or 'timeout', stderr text) of one app run in `folder`. A run whose MPI runtime
-        failed to start (Open MPI's singleton start fails now and then on a loaded machine, exit 1
-        from MPI_Init_thread before the app reads anything) is started once more."""
+        failed to start (exit 1 from MPI_Init_thread before the app reads anything: concurrent
+        isolated singletons did so when they shared a session directory, before run_once gave each
+        its own TMPDIR) is started once more."""
         status, error = self.run_once(arguments, folder)
         if status == 1 and "An error occurred in MPI_Init_thread" in error:
             status, error = self.run_once(arguments, folder)
