@@ -237,18 +237,18 @@ void limit_active_bins(std::int64_t now, int levels, ro<particle_kind> kind, ro<
 /// looks from the active particles at their neighbours: from the owned ones' lists (searched
 /// this step with 2 (1 + search_margin) max(h), enough for the h the density grew), and for the
 /// ghost ones from a walk of the local tree of this step's search (positions unchanged since; the
-/// sources' new h taken in) over them only, when some rank has such a ghost (`ghost_sources`, waking_ghost_sources; on one
-/// rank there are no ghosts). Active ones keep their bound (find_neighbour_bins). A minimum: the
-/// same in any order. A source whose bin + `levels` does not lie below b's own bin cannot wake b
-/// (wake_bins: b wakes when its bin exceeds the smallest source bin + levels, and then takes that
-/// value, which a source below it gives), so it is left out: b's bound may stay higher, but
-/// wake_bins decides the same and sets the same bins (the bound is read nowhere else).
+/// sources' new h taken in) over them only (on one rank there are no ghosts). Active ones keep
+/// their bound (find_neighbour_bins). A minimum: the same in any order. A source whose bin +
+/// `levels` does not lie below b's own bin cannot wake b (wake_bins: b wakes when its bin exceeds
+/// the smallest source bin + levels, and then takes that value, which a source below it gives),
+/// so it is left out: b's bound may stay higher, but wake_bins decides the same and sets the same
+/// bins (the bound is read nowhere else). Each rank walks from its own ghost sources: no rank
+/// waits for another's decision.
 template<int D>
 void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
                       neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now, int levels,
-                      bool ghost_sources, ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h,
-                      ro_with_ghosts<std::int64_t> step_begin, ro_with_ghosts<std::int32_t> time_bin,
-                      rw<std::int32_t> neighbour_bin) {
+                      ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
+                      ro_with_ghosts<std::int32_t> time_bin, rw<std::int32_t> neighbour_bin) {
   const std::size_t owned = neighbour_bin.size(), stored = local->size();
   std::int32_t* bound = neighbour_bin.data();
   const auto waits = [&](std::size_t b) { return b < owned && step_begin(b) != now; };
@@ -278,10 +278,17 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
       }
     },
     "sph::find_waking_bins::owned");
-  if (!ghost_sources) return;
+  if (stored == owned) return;  // no ghosts (one rank)
   std::vector<std::uint8_t> sources(stored);
-  flecsi_lite::forall(
-    stored, [&](std::size_t a) { sources[a] = a >= owned && step_begin(a) == now; }, "sph::find_waking_bins::ghosts");
+  std::size_t source_count = 0;
+  flecsi_lite::forall_reduce(
+    stored - owned,
+    [&](std::size_t i, std::size_t& count) {
+      sources[owned + i] = step_begin(owned + i) == now;
+      count += sources[owned + i];
+    },
+    Kokkos::Sum<std::size_t>(source_count), "sph::find_waking_bins::ghosts");
+  if (source_count == 0) return;
   // The tree is that of this step's search (positions unchanged since); of the particles the walk
   // acts on, only the sources' h changed (the waiting ones were not active): their h is enough.
   local->take_smoothing_lengths_of(sources, h.data());
@@ -290,17 +297,6 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
                                  if (waits(b) && can_wake(b, time_bin(a)))
                                    Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
                                });
-}
-
-/// How many ghost particles started a step at `now` (the sources of find_waking_bins' tree walk):
-/// a sum over ranks, so that every rank takes the same decision. Without any, the walk is left
-/// out (on one rank, before, a refit of the local tree and a walk of its groups in every system
-/// step; docs/performance.md, issue 36).
-template<int D>
-double waking_ghost_sources(std::int64_t now, ro_with_ghosts<std::int64_t> step_begin) {
-  double count = 0;
-  for (std::size_t a = step_begin.owned_size(); a < step_begin.size(); ++a) count += step_begin(a) == now;
-  return count;
 }
 
 /// Wakes the inactive particles whose bin exceeds the bound of find_waking_bins + levels: the
@@ -450,12 +446,9 @@ void choose_time_bins(simulation<D>& s, bool advance) {
   flecsi_lite::execute<limit_active_bins<D>>(s.clock.now, levels, f::kind(p), f::neighbour_bin(p), f::time_bin(p),
                                              f::step_begin(p), f::step_end(p));
   if (levels >= 0) {
-    const bool ghost_sources =
-      flecsi_lite::reduce<waking_ghost_sources<D>, flecsi_lite::reduction::sum>(s.clock.now, f::step_begin(p)).get() >
-      0;
     flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now, levels,
-                                              ghost_sources, f::position()(p), f::smoothing_length()(p),
-                                              f::step_begin(p), f::time_bin(p), f::neighbour_bin(p));
+                                              f::position()(p), f::smoothing_length()(p), f::step_begin(p),
+                                              f::time_bin(p), f::neighbour_bin(p));
     s.woken += flecsi_lite::reduce<wake_bins<D>, flecsi_lite::reduction::sum>(
                  s.clock, levels, f::kind(p), f::neighbour_bin(p), f::acceleration(p), f::internal_energy_rate(p),
                  f::step_begin(p), f::time_bin(p), f::step_end(p), f::velocity_half(p), f::internal_energy_half(p))
