@@ -32,8 +32,8 @@ set(FLECSPH_TEST_ENVIRONMENT
 # before main here, 0.12 s on shared memory (vader) and ob1 alone, the transports used on one node
 # anyway. Not isolated singletons (ess_singleton_isolated, 0.04 s): they all share one session
 # directory, which each removes as it ends, and concurrent ones then fail in MPI_Init or in
-# MPI_File_open (validation.rayleigh_taylor.rank_invariance failed so at stop 46; 2 of 160
-# concurrent runs in the stress of docs/performance.md, "Stop 46").
+# MPI_File_open (validation.rayleigh_taylor.rank_invariance failed so; docs/performance.md,
+# "Stop 46"). The fuzz scripts keep them, each run with a TMPDIR of its own.
 # When a rank exits non-zero (every bad-input test), mpiexec stops the others with SIGTERM and
 # waits odls_base_sigkill_timeout (1 s) twice before it returns: 2.1 s of each such test's 2.2 s,
 # 116 tests; the suite took 845 slot-seconds with the wait, 400 without (stop 46). The wait buys
