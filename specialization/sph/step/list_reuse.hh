@@ -60,18 +60,27 @@ neighbour_slack measure_neighbour_slack(neighbours_ro<D> neighbours_object, tree
     slack.lists.displacement = infinite;
     return slack;
   }
-  for (std::size_t a = 0; a < h.size(); ++a) {
-    double d2 = 0;
-    bool wrapped = false;
-    for (int k = 0; k < D; ++k) {
-      const double dx = x(a)[k] - n.listed_x[a][k];
-      wrapped = wrapped || (space.periodic[k] && 2 * std::fabs(dx) > space.period(k));
-      d2 += dx * dx;
-    }
-    const double displacement = wrapped ? infinite : std::sqrt(d2) / n.listed_h[a];
-    slack.lists.displacement = std::max(slack.lists.displacement, displacement);
-    slack.lists.growth = std::max(slack.lists.growth, h(a) / n.listed_h[a]);
-  }
+  // Maxima, in parallel: the same in any order. Kokkos starts them at the lowest double, the
+  // members at 0.
+  double largest_displacement = 0, largest_growth = 0;
+  flecsi_lite::forall_reduce(
+    h.size(),
+    [&](std::size_t a, double& top) {
+      double d2 = 0;
+      bool wrapped = false;
+      for (int k = 0; k < D; ++k) {
+        const double dx = x(a)[k] - n.listed_x[a][k];
+        wrapped = wrapped || (space.periodic[k] && 2 * std::fabs(dx) > space.period(k));
+        d2 += dx * dx;
+      }
+      top = std::max(top, wrapped ? infinite : std::sqrt(d2) / n.listed_h[a]);
+    },
+    Kokkos::Max<double>(largest_displacement), "sph::measure_neighbour_slack::displacement");
+  flecsi_lite::forall_reduce(
+    h.size(), [&](std::size_t a, double& top) { top = std::max(top, h(a) / n.listed_h[a]); },
+    Kokkos::Max<double>(largest_growth), "sph::measure_neighbour_slack::growth");
+  slack.lists.displacement = std::max(slack.lists.displacement, largest_displacement);
+  slack.lists.growth = std::max(slack.lists.growth, largest_growth);
   return slack;
 }
 
