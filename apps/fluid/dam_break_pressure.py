@@ -97,15 +97,19 @@ def ringing_period(T, series, onset, span=0.5):
     return float((negative[0] + peaks[0] + 1) * dt) if len(peaks) else float("nan")
 
 
+def read_every(T, p1, p2, interval, start):
+    """The first impact of the series read at T = start, start + interval, ... (linear between rows)."""
+    grid = np.arange(start, T[-1], interval)
+    return first_impact(grid, np.interp(grid, T, p1), np.interp(grid, T, p2))
+
+
 def point_samples(T, p1, p2, interval=0.01):
-    """The first impact of the series read at T = 0, interval, 2 interval, ... (linear between
-    rows), as TrixiParticles stores its sensors; and the range of the peaks over the ten phases
-    of that grid shifted by interval / 10 (a spike shorter than the interval is missed or hit)."""
-    def at(shift):
-        grid = np.arange(0, T[-1] - shift, interval) + shift
-        return first_impact(grid, np.interp(grid, T, p1), np.interp(grid, T, p2))
-    phases = [at(s) for s in np.arange(0, interval, interval / 10)]
-    return at(0.0), [min(p[k] for p in phases) for k in (1, 2)], [max(p[k] for p in phases) for k in (1, 2)]
+    """The first impact of the series read at T = 0, interval, 2 interval, ... (read_every), as
+    TrixiParticles stores its sensors; and the range of the peaks over the ten phases of that grid
+    shifted by interval / 10 (a spike shorter than the interval is missed or hit)."""
+    phases = [read_every(T, p1, p2, interval, s) for s in np.arange(0, interval, interval / 10)]
+    return (read_every(T, p1, p2, interval, 0.0), [min(p[k] for p in phases) for k in (1, 2)],
+            [max(p[k] for p in phases) for k in (1, 2)])
 
 
 def sampled_peaks(T, p1, p2, interval, integrate=True, phases=1000, seed=2014):
@@ -117,12 +121,8 @@ def sampled_peaks(T, p1, p2, interval, integrate=True, phases=1000, seed=2014):
     percentiles of the first peak over the phases."""
     if integrate:
         p1, p2 = (np.nan_to_num(running_mean(T, p, interval)) for p in (p1, p2))
-    peaks = []
-    for phase in np.random.default_rng(seed).uniform(0, interval, phases):
-        grid = np.arange(T[0] + phase, T[-1], interval)
-        _, peak1, peak2 = first_impact(grid, np.interp(grid, T, p1), np.interp(grid, T, p2))
-        peaks.append((peak1, peak2))
-    peaks = np.array(peaks)
+    peaks = np.array([read_every(T, p1, p2, interval, T[0] + phase)[1:]
+                      for phase in np.random.default_rng(seed).uniform(0, interval, phases)])
     return [tuple(np.percentile(peaks[:, k], (50, 2.5, 97.5))) for k in (0, 1)]
 
 
