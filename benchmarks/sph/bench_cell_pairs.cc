@@ -314,7 +314,7 @@ void density_by_lists(const sph::neighbourhood<3>& n, const std::vector<sph::vec
   const sph::neighbour_walk<3> walk(n);
   sph::detail::gathered_pairs pairs;
   for (std::size_t a = 0; a < n.size(); ++a) {
-    sph::detail::gather_pairs<3>(walk, a, x.data(), m.data(), pairs);
+    sph::detail::gather_pairs<3>(walk.row(a), a, x.data(), m.data(), pairs);
     for (int i = 0; i < iterations; ++i) sph::detail::density_sums<Kernel>(pairs, h, rho[a], drho_dh[a]);
   }
 }

@@ -61,8 +61,9 @@ double kernel_neighbours(sph::neighbours_ro<D> neighbours_object, sph::ro_with_g
   for (std::size_t a = 0; a < neighbours.size(); ++a) {
     const double reach = flecsph::physics::kernel_support * h(a);
     sph::vector<D> r;
-    for (std::size_t j = walk.begin(a); j < walk.end(a); ++j)
-      count += walk.separation(x(a), x(walk.neighbour(j)), j, r) < reach * reach;
+    const sph::neighbour_row<D> row = walk.row(a);
+    for (std::size_t j = 0; j < row.size(); ++j)
+      count += row.separation(x(a), x(row.neighbour(j)), j, r) < reach * reach;
   }
   return count;
 }
@@ -75,12 +76,14 @@ double within_reach(sph::neighbours_ro<D> neighbours_object, sph::ro_with_ghosts
   const sph::neighbour_walk<D> walk(neighbours);
   double count = 0;
   sph::vector<D> r;
-  for (std::size_t a = 0; a < neighbours.size(); ++a)
-    for (std::size_t j = walk.begin(a); j < walk.end(a); ++j) {
-      const std::size_t b = walk.neighbour(j);
+  for (std::size_t a = 0; a < neighbours.size(); ++a) {
+    const sph::neighbour_row<D> row = walk.row(a);
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      const std::size_t b = row.neighbour(j);
       const double radius = neighbours.reach * std::max(h(a), h(b));
-      count += walk.separation(x(a), x(b), j, r) < radius * radius;
+      count += row.separation(x(a), x(b), j, r) < radius * radius;
     }
+  }
   return count;
 }
 

@@ -57,18 +57,19 @@ wall_sums<D> wall_sums_of(const sph::neighbour_walk<D>& walk, std::size_t a, dou
   const T zero = 0.0;
   simd::ordered_sum<T> weight, pressure, force_term, velocity[D];
   const vector<D> x_a = in.x[a];
-  const std::size_t first = walk.begin(a), end = walk.end(a);
-  for (std::size_t j0 = first; j0 < end; j0 += W) {
+  const sph::neighbour_row<D> row = walk.row(a);
+  const std::size_t end = row.size();
+  for (std::size_t j0 = 0; j0 < end; j0 += W) {
     // Most of a wall particle's neighbours are walls: their packs are skipped before any arithmetic.
     bool fluid[W], any_fluid = false;
     for (std::size_t i = 0; i < W; ++i) {
-      fluid[i] = j0 + i < end && in.kind[walk.neighbour(j0 + i)] == sph::particle_kind::fluid;
+      fluid[i] = j0 + i < end && in.kind[row.neighbour(j0 + i)] == sph::particle_kind::fluid;
       any_fluid |= fluid[i];
     }
     if (!any_fluid) continue;
     std::size_t b[W];
     T r[D];
-    const T r2 = walk.separations(j0, end, x_a, in.x, b, r);
+    const T r2 = row.separations(j0, x_a, in.x, b, r);
     const T fluid_lane = simd::generate<T>([&](std::size_t i) { return fluid[i] ? 1.0 : 0.0; });
     const auto pair = (fluid_lane != 0.0) && (r2 < reach2);
     if (!simd::any_lane(pair)) continue;

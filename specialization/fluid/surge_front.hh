@@ -37,10 +37,11 @@ double surge_front_task(sph::neighbours_ro<D> neighbours_object, surge_front_set
     if (kind(a) != sph::particle_kind::fluid || x(a)[1] - settings.floor_y > settings.height || x(a)[0] <= front)
       continue;
     int count = 0;
-    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end && count < 2; ++j) {
-      const std::size_t b = walk.neighbour(j);
+    const sph::neighbour_row<D> row = walk.row(a);
+    for (std::size_t j = 0, end = row.size(); j < end && count < 2; ++j) {
+      const std::size_t b = row.neighbour(j);
       if (kind(b) != sph::particle_kind::fluid) continue;
-      const double r2 = walk.separation(x(a), x(b), j, r);
+      const double r2 = row.separation(x(a), x(b), j, r);
       if (r2 > 0 && r2 < reach2) ++count;
     }
     if (count >= 2) front = x(a)[0];

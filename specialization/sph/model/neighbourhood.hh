@@ -32,10 +32,12 @@ namespace tree = flecsi_lite::topology::ntree;
 /// positions listed_x and h listed_h and kept over the steps while that still holds
 /// (list_reuse.hh; Verlet 1967). The pair tasks skip the entries beyond the kernel support, so a
 /// sum takes the same pairs in the same order as over the lists of a search now.
-/// Each entry packs b with its shift code (ntree::shift_storage::packed): 4 bytes per entry.
+/// Each entry packs b with its shift code, and each row is kept as runs of consecutive
+/// neighbours (ntree::shift_storage::runs): about 1 byte per entry instead of 4. The pair loops
+/// read a target's row decoded (neighbour_walk::row), entry for entry the packed row.
 template<int D>
 struct neighbourhood {
-  tree::neighbour_lists lists;  ///< offsets per owned particle, packed entries (b, shift code)
+  tree::neighbour_lists lists;  ///< offsets per owned particle, rows of packed entries (b, shift code) as runs
   std::array<vector<D>, tree::shift_code_count<D>> shift_table{};  ///< displacement per shift code
   double reach = 2.0;               ///< the reach the lists hold, in units of h (>= the kernel support 2)
   double list_reach = 2.0;          ///< the reach they were searched with (>= reach)
@@ -63,8 +65,8 @@ struct neighbourhood {
   /// the target sets.
   std::size_t bytes() const {
     return lists.offsets.capacity() * sizeof(std::size_t) + lists.neighbours.capacity() * sizeof(std::uint32_t) +
-           lists.shifts.capacity() * sizeof(tree::shift_code) + listed_x.capacity() * sizeof(vector<D>) +
-           listed_h.capacity() * sizeof(double) +
+           lists.shifts.capacity() * sizeof(tree::shift_code) + lists.runs.capacity() +
+           listed_x.capacity() * sizeof(vector<D>) + listed_h.capacity() * sizeof(double) +
            (interior.capacity() + boundary.capacity() + active_interior.capacity() + active_boundary.capacity()) *
              sizeof(std::uint32_t);
   }
@@ -85,35 +87,32 @@ double neighbour_total(neighbours_ro<D> neighbours) {
   return static_cast<double>(neighbours->lists.total());
 }
 
-/// A view of a neighbourhood for the inner loops: raw pointers, separations with images.
+/// One target's list as the inner loops read it: entries j = 0 .. size(), each a packed
+/// (b, shift code), with separations that include the periodic images.
 template<int D>
-struct neighbour_walk {
-  const std::size_t* offsets;
+struct neighbour_row {
   const std::uint32_t* entries;
+  std::size_t count;
   const vector<D>* shift_table;
 
-  explicit neighbour_walk(const neighbourhood<D>& n)
-      : offsets(n.lists.offsets.data()), entries(n.lists.neighbours.data()), shift_table(n.shift_table.data()) {}
-
-  std::size_t begin(std::size_t a) const { return offsets[a]; }
-  std::size_t end(std::size_t a) const { return offsets[a + 1]; }
+  std::size_t size() const { return count; }
   std::size_t neighbour(std::size_t j) const { return tree::packed_neighbour(entries[j]); }
   /// The periodic image shift of entry j (zero for the particle itself).
   const vector<D>& shift(std::size_t j) const { return shift_table[tree::packed_shift(entries[j])]; }
   /// Whether entry j is a periodic image (its shift is not the zero vector).
   bool shifted(std::size_t j) const { return tree::packed_shift(entries[j]) != tree::zero_shift<D>; }
 
-  /// separation() for the list entries j0 .. j0 + Lanes at once (past `end`, lanes repeat the
-  /// last entry; the caller masks them): their neighbours in b, r_ab as packs per axis, and
-  /// |r_ab|^2, each lane bitwise separation(). The shifts are loaded only when an entry is an
-  /// image (most are not): the table's zero shift is +0, and x - (+0) = x.
+  /// separation() for the entries j0 .. j0 + Lanes at once (past the end, lanes repeat the last
+  /// entry; the caller masks them): their neighbours in b, r_ab as packs per axis, and |r_ab|^2,
+  /// each lane bitwise separation(). The shifts are loaded only when an entry is an image (most
+  /// are not): the table's zero shift is +0, and x - (+0) = x.
   template<class T, std::size_t Lanes>
-  FLECSPH_SIMD_INLINE T separations(std::size_t j0, std::size_t end, const vector<D>& x_a, const vector<D>* x,
-                                    std::size_t (&b)[Lanes], T (&r)[D]) const {
+  FLECSPH_SIMD_INLINE T separations(std::size_t j0, const vector<D>& x_a, const vector<D>* x, std::size_t (&b)[Lanes],
+                                    T (&r)[D]) const {
     std::size_t j[Lanes];
     bool any_shifted = false;
     for (std::size_t i = 0; i < Lanes; ++i) {
-      j[i] = std::min(j0 + i, end - 1);
+      j[i] = std::min(j0 + i, count - 1);
       b[i] = neighbour(j[i]);
       any_shifted |= shifted(j[i]);
     }
@@ -125,9 +124,9 @@ struct neighbour_walk {
     return r2;
   }
 
-  /// r_ab = (x_a - x_b) - shift_j for entry j of a's list, and |r_ab|^2. Grouped so that the
-  /// pair (b, a), seen under the opposite shift, gives exactly the negated vector and the same
-  /// squared distance: pair terms are then antisymmetric to the last bit.
+  /// r_ab = (x_a - x_b) - shift_j for entry j, and |r_ab|^2. Grouped so that the pair (b, a),
+  /// seen under the opposite shift, gives exactly the negated vector and the same squared
+  /// distance: pair terms are then antisymmetric to the last bit.
   double separation(const vector<D>& x_a, const vector<D>& x_b, std::size_t j, vector<D>& r) const {
     const vector<D>& s = shift(j);
     double r2 = 0;
@@ -136,6 +135,31 @@ struct neighbour_walk {
       r2 += r[k] * r[k];
     }
     return r2;
+  }
+};
+
+/// A view of a neighbourhood for the inner loops: the row of each target, decoded from its runs
+/// (or read in place from plain packed lists, as tests and benchmarks build them).
+template<int D>
+struct neighbour_walk {
+  const tree::neighbour_lists* lists;
+  const vector<D>* shift_table;
+
+  explicit neighbour_walk(const neighbourhood<D>& n) : lists(&n.lists), shift_table(n.shift_table.data()) {}
+
+  /// Target a's row. Runs are decoded into a buffer of the calling thread, which the thread's
+  /// next row() reuses: a thread reads one row at a time (as every pair loop does).
+  neighbour_row<D> row(std::size_t a) const {
+    const std::size_t begin = lists->offsets[a], end = lists->offsets[a + 1];
+    if (!lists->in_runs) return {lists->neighbours.data() + begin, end - begin, shift_table};
+    if (begin == end) return {nullptr, 0, shift_table};  // not a target
+    static thread_local std::vector<std::uint32_t> decoded;
+    const std::uint8_t* coded = lists->runs.data() + begin;
+    const std::size_t count = tree::runs::row_count(coded);
+    if (decoded.size() < count + tree::runs::decode_padding)
+      decoded.resize(count + count / 4 + tree::runs::decode_padding);
+    tree::runs::decode_row(coded, decoded.data());
+    return {decoded.data(), count, shift_table};
   }
 };
 
@@ -164,8 +188,9 @@ void split_targets(neighbourhood<D>& n, std::size_t particles) {
   flecsi_lite::forall(
     needs_ghosts.size(),
     [&](std::size_t a) {
+      const neighbour_row<D> row = walk.row(a);
       bool ghost = false;
-      for (std::size_t j = walk.begin(a), end = walk.end(a); j < end && !ghost; ++j) ghost = walk.neighbour(j) >= owned;
+      for (std::size_t j = 0; j < row.size() && !ghost; ++j) ghost = row.neighbour(j) >= owned;
       needs_ghosts[a] = ghost;
     },
     "sph::split_targets");
@@ -191,6 +216,7 @@ template<int D>
 void finish_search(const tree::local_tree<D>& local, neighbourhood<D>& out, double support, double list_reach,
                    const tree::domain<D>& space) {
   release_spare_room(out.lists.neighbours);
+  release_spare_room(out.lists.runs);
   const auto table = space.shift_table();
   for (std::size_t c = 0; c < table.size(); ++c)
     for (int k = 0; k < D; ++k) out.shift_table[c][k] = table[c][k];
@@ -230,7 +256,7 @@ void search_neighbours(typename flecsi_lite::tracked<tree::local_tree<D>>::templ
                        double list_skin, tree::domain<D> space) {
   const double list_reach = support * (1 + list_skin);
   local->find_neighbours(tree::interaction::symmetric, list_reach, space, out->lists, search_groups,
-                         tree::shift_storage::packed);
+                         tree::shift_storage::runs);
   detail::finish_search(*local, *out, support, list_reach, space);
 }
 
@@ -245,7 +271,7 @@ void search_active_neighbours(
   flecsi_lite::forall(
     active.size(), [&](std::size_t a) { active[a] = step_end(a) == next; }, "sph::search_active_neighbours::mask");
   local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, {},
-                            tree::shift_storage::packed);
+                            tree::shift_storage::runs);
   detail::finish_search(*local, *out, support, support, space);
 }
 
@@ -281,16 +307,18 @@ coincident_pair find_coincident(neighbours_ro<D> neighbours_object, ro_with_ghos
   const neighbour_walk<D> walk(neighbours);
   coincident_pair best;
   vector<D> r;
-  for (std::size_t a = 0; a < neighbours.size(); ++a)
-    for (std::size_t j = walk.begin(a); j < walk.end(a); ++j) {
-      const std::size_t b = walk.neighbour(j);
-      if (b == a || walk.separation(x(a), x(b), j, r) != 0) continue;
+  for (std::size_t a = 0; a < neighbours.size(); ++a) {
+    const neighbour_row<D> row = walk.row(a);
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      const std::size_t b = row.neighbour(j);
+      if (b == a || row.separation(x(a), x(b), j, r) != 0) continue;
       coincident_pair pair;
       pair.first = std::min(id(a), id(b));
       pair.second = std::max(id(a), id(b));
       for (int k = 0; k < D; ++k) pair.x[k] = x(a)[k];
       best = coincident_reduction::combine(best, pair);
     }
+  }
   return best;
 }
 

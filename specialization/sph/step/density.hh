@@ -40,9 +40,9 @@ struct gathered_pairs {
 };
 
 template<int D>
-void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>* x, const double* m,
-                  gathered_pairs& out, const double* u = nullptr) {
-  const std::size_t first = walk.begin(a), count = walk.end(a) - first, W = physics::simd::lanes<density_pack>;
+void gather_pairs(const neighbour_row<D>& row, std::size_t a, const vector<D>* x, const double* m, gathered_pairs& out,
+                  const double* u = nullptr) {
+  const std::size_t count = row.size(), W = physics::simd::lanes<density_pack>;
   const std::size_t padded = (count + W - 1) / W * W;
   if (out.r.size() < padded) {
     out.r.resize(padded);
@@ -55,7 +55,7 @@ void gather_pairs(const neighbour_walk<D>& walk, std::size_t a, const vector<D>*
   for (std::size_t i = 0; i < count; i += W) {
     std::size_t b[simd::lanes<T>];
     T r[D];
-    const T r2 = walk.separations(first + i, first + count, x[a], x, b, r);
+    const T r2 = row.separations(i, x[a], x, b, r);
     simd::store(simd::square_root(r2), out.r.data() + i);
     simd::store(simd::generate<T>([&](std::size_t l) { return m[b[l]]; }), out.m.data() + i);
     if (u) simd::store(simd::generate<T>([&](std::size_t l) { return m[b[l]] * u[b[l]]; }), out.mu.data() + i);
@@ -113,7 +113,7 @@ void smoothed_pressure(const gathered_pairs& pairs, double gamma_minus_one, doub
 /// zeta_a / Omega_a with zeta_a = (dh_a/drho_a) sum_b m_b d phi(r_ab, h_a) / d h_a (Price & Monaghan
 /// 2007, sec. 3), dh/drho = -h / (3 rho) (0 for a fixed h): the self term b = a included.
 template<class Kernel, int D>
-double gravity_zeta_over_omega(const neighbour_walk<D>& walk, std::size_t a, double h, double rho, double omega,
+double gravity_zeta_over_omega(const neighbour_row<D>& row, std::size_t a, double h, double rho, double omega,
                                bool adapt, const vector<D>* x, const double* m) {
   if constexpr (D != 3) {
     return 0.0;  // gravity is 3D only (check_gravity_domain)
@@ -124,9 +124,9 @@ double gravity_zeta_over_omega(const neighbour_walk<D>& walk, std::size_t a, dou
     const vector<D>& x_a = x[a];
     double sum = 0;
     vector<D> r;
-    for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-      const std::size_t b = walk.neighbour(j);
-      const double r2 = walk.separation(x_a, x[b], j, r);
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      const std::size_t b = row.neighbour(j);
+      const double r2 = row.separation(x_a, x[b], j, r);
       if (r2 >= reach2) continue;
       sum += m[b] * softening::h_derivative(std::sqrt(r2), h);
     }
@@ -162,7 +162,8 @@ double density_loop(const neighbourhood<D>& neighbours, const physics_settings& 
         const bool adapt = settings.adaptive_smoothing_length && kind(a) == particle_kind::fluid;
         double h_a = h_start, rho_a = 0, drho_dh = 0;
         thread_local gathered_pairs pairs;
-        gather_pairs<D>(walk, a, xs, ms, pairs, pressure.u);
+        const neighbour_row<D> row = walk.row(a);
+        gather_pairs<D>(row, a, xs, ms, pairs, pressure.u);
         for (int iteration = 1;; ++iteration) {
           density_sums<Kernel>(pairs, h_a, rho_a, drho_dh);
           if (!adapt || iteration >= settings.h_iterations) break;
@@ -176,7 +177,7 @@ double density_loop(const neighbourhood<D>& neighbours, const physics_settings& 
         omega(a) = adapt ? physics::grad_h_omega<D>(h_a, rho_a, drho_dh) : 1.0;
         // At h_a > h_limit the caller searches again and calls the task again: zeta is recomputed.
         if (zeta_over_omega)
-          zeta_over_omega[a] = gravity_zeta_over_omega<Kernel, D>(walk, a, h_a, rho_a, omega(a), adapt, xs, ms);
+          zeta_over_omega[a] = gravity_zeta_over_omega<Kernel, D>(row, a, h_a, rho_a, omega(a), adapt, xs, ms);
         if (pressure.u)
           smoothed_pressure<Kernel, D>(pairs, gamma_minus_one, h_a, rho_a, omega(a), adapt, pressure.P_bar[a],
                                        pressure.grad_h[a]);

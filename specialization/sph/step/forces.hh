@@ -87,12 +87,13 @@ void force_sums(const neighbour_walk<D>& walk, std::size_t a, const force_fields
   const T lane = simd::generate<T>([](std::size_t i) { return double(i); });
   simd::striped_sum<T> sum_v[D], sum_u;
   T largest = c_a;
-  const std::size_t first = walk.begin(a), end = walk.end(a);
-  for (std::size_t j0 = first; j0 < end; j0 += W) {
+  const neighbour_row<D> row = walk.row(a);
+  const std::size_t end = row.size();
+  for (std::size_t j0 = 0; j0 < end; j0 += W) {
     // Lane i holds entry j0 + i; past the end it repeats the last entry, masked out below.
     std::size_t b[W];
     T r[D], r_dot_v = 0.0;
-    const T r2 = walk.separations(j0, end, x_a, in.x, b, r);
+    const T r2 = row.separations(j0, x_a, in.x, b, r);
     const auto gather = [&](const double* field) {
       return simd::generate<T>([&](std::size_t i) { return field[b[i]]; });
     };

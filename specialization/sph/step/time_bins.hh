@@ -184,11 +184,11 @@ namespace detail {
 /// Whether entry j of a's list is within the kernel support of either, |r_ab| < 2 max(h_a, h_b):
 /// the pairs of the force sums, which the limiter looks at.
 template<int D, class Positions, class Lengths>
-bool within_kernel(const neighbour_walk<D>& walk, const Positions& x, const Lengths& h, std::size_t a, std::size_t j) {
-  const std::size_t b = walk.neighbour(j);
+bool within_kernel(const neighbour_row<D>& row, const Positions& x, const Lengths& h, std::size_t a, std::size_t j) {
+  const std::size_t b = row.neighbour(j);
   const double reach = physics::kernel_support * std::max(h(a), h(b));
   vector<D> r;
-  return walk.separation(x(a), x(b), j, r) < reach * reach;
+  return row.separation(x(a), x(b), j, r) < reach * reach;
 }
 }  // namespace detail
 
@@ -207,9 +207,10 @@ void find_neighbour_bins(neighbours_ro<D> neighbours, std::int64_t now, ro_with_
       std::int32_t smallest = time_bin(a);
       // A neighbour's bin is read before its distance: one that cannot lower the minimum (most
       // of them, in a smooth flow) needs no separation.
-      for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j)
-        if (const std::int32_t bin = time_bin(walk.neighbour(j));
-            bin < smallest && detail::within_kernel(walk, x, h, a, j))
+      const neighbour_row<D> row = walk.row(a);
+      for (std::size_t j = 0, end = row.size(); j < end; ++j)
+        if (const std::int32_t bin = time_bin(row.neighbour(j));
+            bin < smallest && detail::within_kernel(row, x, h, a, j))
           smallest = bin;
       neighbour_bin(a) = smallest;
     },
@@ -266,14 +267,15 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
     [&](std::size_t a) {
       if (step_begin(a) != now) return;
       const std::int32_t bin = time_bin(a);
-      for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-        const std::size_t b = walk.neighbour(j);
+      const neighbour_row<D> row = walk.row(a);
+      for (std::size_t j = 0, end = row.size(); j < end; ++j) {
+        const std::size_t b = row.neighbour(j);
         // Bounds only fall: one already at or below a's bin stays where it is, and the
         // separation is left out (a neighbour shared by several active particles). A relaxed
         // atomic read: another thread may lower the bound meanwhile, which only costs a test.
         // The bins first: most neighbours' cannot be woken by a, and their step start is not read.
         if (can_wake(b, bin) && waits(b) && bin < __atomic_load_n(&bound[b], __ATOMIC_RELAXED) &&
-            detail::within_kernel(walk, x, h, a, j))
+            detail::within_kernel(row, x, h, a, j))
           Kokkos::atomic_fetch_min(&bound[b], bin);
       }
     },

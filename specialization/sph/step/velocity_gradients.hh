@@ -42,11 +42,12 @@ void velocity_gradient_sums(const neighbour_walk<D>& walk, std::size_t a, const 
   namespace simd = physics::simd;
   constexpr std::size_t W = simd::lanes<T>;
   const T zero = 0.0;
-  const std::size_t end = walk.end(a);
-  for (std::size_t j = walk.begin(a); j < end; j += W) {
+  const neighbour_row<D> row = walk.row(a);
+  const std::size_t end = row.size();
+  for (std::size_t j = 0; j < end; j += W) {
     std::size_t b[W];
     T r[D];
-    const T r2 = walk.separations(j, end, x[a], x, b, r);
+    const T r2 = row.separations(j, x[a], x, b, r);
     const auto inside = (r2 < reach2) && (r2 != 0.0);
     const T factor = simd::generate<T>([&](std::size_t l) { return m[b[l]]; }) *
                      kernel_a.gradient_factor(simd::square_root(r2));  // grad W = r factor

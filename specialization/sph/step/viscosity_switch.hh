@@ -55,9 +55,10 @@ void compute_switch_gradients(neighbours_ro<D> neighbours_object, physics_settin
         double gradient[D][D] = {};
         double acceleration_sum = 0;
         vector<D> r;
-        for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-          const std::size_t b = walk.neighbour(j);
-          const double r2 = walk.separation(x(a), x(b), j, r);
+        const neighbour_row<D> row = walk.row(a);
+        for (std::size_t j = 0, end = row.size(); j < end; ++j) {
+          const std::size_t b = row.neighbour(j);
+          const double r2 = row.separation(x(a), x(b), j, r);
           if (r2 >= reach2 || r2 == 0) continue;
           const double factor = m(b) * kernel_a.gradient_factor(std::sqrt(r2));
           for (int k = 0; k < D; ++k) {
@@ -112,9 +113,10 @@ void update_switch_alpha(neighbours_ro<D> neighbours_object, physics_settings se
         const double reach2 = support_radius * support_radius;
         double signed_sum = 0, signal = cs(a);
         vector<D> r;
-        for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-          const std::size_t b = walk.neighbour(j);
-          const double r2 = walk.separation(x(a), x(b), j, r);
+        const neighbour_row<D> row = walk.row(a);
+        for (std::size_t j = 0, end = row.size(); j < end; ++j) {
+          const std::size_t b = row.neighbour(j);
+          const double r2 = row.separation(x(a), x(b), j, r);
           if (r2 >= reach2) continue;
           const double distance = std::sqrt(r2);
           double w, dw_dh;

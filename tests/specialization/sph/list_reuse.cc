@@ -77,18 +77,18 @@ std::size_t differences_from_a_search_now(reuse_run& s) {
   p.refresh_local_tree();  // also copies the ghosts' current values
   sph::find_neighbours(p, fresh, 0.0);
   const auto& n = s.neighbours.host();
-  const auto& kept = n.lists;
-  const auto& now = fresh.host().lists;
-  REQUIRE(kept.size() == now.size());
+  const sph::neighbour_walk<D> kept(n), now(fresh.host());
+  REQUIRE(n.size() == fresh.host().size());
   const auto x = flecsi_lite::host_view(f::position()(p));
   const auto h = flecsi_lite::host_view(f::smoothing_length()(p));
   std::size_t differences = 0;
-  for (std::size_t a = 0; a < kept.size(); ++a) {
+  for (std::size_t a = 0; a < n.size(); ++a) {
     std::vector<std::uint32_t> mine;
-    for (std::size_t j = kept.offsets[a]; j < kept.offsets[a + 1]; ++j) {
-      const std::uint32_t entry = kept.neighbours[j];
-      const std::size_t b = tree::packed_neighbour(entry);
-      const auto& shift = n.shift_table[tree::packed_shift(entry)];
+    const sph::neighbour_row<D> row = kept.row(a);
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      const std::uint32_t entry = row.entries[j];
+      const std::size_t b = row.neighbour(j);
+      const auto& shift = row.shift(j);
       double r2 = 0;
       for (int k = 0; k < D; ++k) {
         const double d = x(a)[k] - (x(b)[k] + shift[k]);
@@ -97,8 +97,8 @@ std::size_t differences_from_a_search_now(reuse_run& s) {
       const double radius_a = n.reach * h(a), radius_b = n.reach * h(b);
       if (r2 < std::max(radius_a * radius_a, radius_b * radius_b)) mine.push_back(entry);
     }
-    const std::vector<std::uint32_t> theirs(now.neighbours.begin() + now.offsets[a],
-                                            now.neighbours.begin() + now.offsets[a + 1]);
+    const sph::neighbour_row<D> searched = now.row(a);  // reuses the buffer of `row`, copied into mine
+    const std::vector<std::uint32_t> theirs(searched.entries, searched.entries + searched.size());
     if (mine != theirs) differences += std::max(mine.size(), theirs.size());
   }
   return differences;

@@ -57,7 +57,7 @@ void compare_density(const sph::neighbour_walk<D>& walk, std::size_t owned, cons
                      const double* h, comparison& result) {
   sph::detail::gathered_pairs pairs;
   for (std::size_t a = 0; a < owned; ++a) {
-    sph::detail::gather_pairs<D>(walk, a, x, m, pairs);
+    sph::detail::gather_pairs<D>(walk.row(a), a, x, m, pairs);
     for (double factor : {0.9, 1.0, 1.04}) {
       double rho_lanes, drho_lanes, rho_one, drho_one;
       sph::detail::density_sums<Kernel, sph::detail::density_pack>(pairs, factor * h[a], rho_lanes, drho_lanes);
@@ -76,9 +76,10 @@ void plain_gradient_sums(const sph::neighbour_walk<D>& walk, std::size_t a, cons
   const sph::kernel_at<Kernel> kernel_a(h_a);
   const double reach2 = flecsph::physics::kernel_support * flecsph::physics::kernel_support * h_a * h_a;
   sph::vector<D> r;
-  for (std::size_t j = walk.begin(a), end = walk.end(a); j < end; ++j) {
-    const std::size_t b = walk.neighbour(j);
-    const double r2 = walk.separation(x[a], x[b], j, r);
+  const sph::neighbour_row<D> row = walk.row(a);
+  for (std::size_t j = 0, end = row.size(); j < end; ++j) {
+    const std::size_t b = row.neighbour(j);
+    const double r2 = row.separation(x[a], x[b], j, r);
     if (r2 >= reach2 || r2 == 0) continue;
     const double factor = m[b] * kernel_a.gradient_factor(std::sqrt(r2));
     sph::vector<3> dv{}, rr{};

@@ -46,11 +46,11 @@ TEST_CASE("interior and boundary targets partition the owned particles as the li
       ++seen[(*set)[i]];
     }
   for (std::size_t a = 0; a < owned; ++a) CHECK(seen[a] == 1);
-  const auto& lists = n.lists;
+  const sph::neighbour_walk<D> walk(n);
   const auto ghost_neighbours = [&](std::size_t a) {
+    const sph::neighbour_row<D> row = walk.row(a);
     std::size_t count = 0;
-    for (std::size_t j = lists.offsets[a]; j < lists.offsets[a + 1]; ++j)
-      count += tree::packed_neighbour(lists.neighbours[j]) >= owned;
+    for (std::size_t j = 0; j < row.size(); ++j) count += row.neighbour(j) >= owned;
     return count;
   };
   for (const auto a : n.interior) CHECK(ghost_neighbours(a) == 0);

@@ -6,6 +6,7 @@
 #include "flecsi_lite/execution/forall.hh"
 #include "flecsi_lite/execution/shared_argument.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
+#include "flecsi_lite/topology/ntree/search/packed_entries.hh"
 
 #include <algorithm>
 #include <cstddef>
@@ -54,32 +55,32 @@ struct search_options {
 ///   separate  in neighbour_lists::shifts, one byte per entry;
 ///   packed    in the top 32 - packed_index_bits = 5 bits of the entry itself (packed_entry), on every
 ///             domain (zero_shift when it is not periodic): 4 bytes per entry, at most 2^27
-///             particles in the tree.
-enum class shift_storage { separate, packed };
-
-inline constexpr int packed_index_bits = 27;
-inline constexpr std::uint32_t packed_index_mask = (std::uint32_t{1} << packed_index_bits) - 1;
-static_assert(shift_code_count<3> <= (1 << (32 - packed_index_bits)), "shift codes must fit the top bits");
-
-/// A packed entry: neighbour b (< 2^27) and its shift code.
-inline std::uint32_t packed_entry(std::uint32_t b, shift_code code) {
-  return b | static_cast<std::uint32_t>(code) << packed_index_bits;
-}
-inline std::uint32_t packed_neighbour(std::uint32_t entry) { return entry & packed_index_mask; }
-inline shift_code packed_shift(std::uint32_t entry) { return static_cast<shift_code>(entry >> packed_index_bits); }
+///             particles in the tree;
+///   runs      packed entries, each row coded as runs of consecutive neighbours in
+///             neighbour_lists::runs (packed_entries.hh): about 1 byte per entry, read a row
+///             with runs::decode_row.
+enum class shift_storage { separate, packed, runs };
 
 /// Neighbours of every target in compressed sparse row form: those of particle a are
 /// neighbours[offsets[a] .. offsets[a + 1]), in ascending sorted index; a non-target has none.
 /// With a periodic domain, shifts[j] is the image shift code of entry j (x_b + shift), unless
-/// the codes are packed into the entries (shift_storage::packed).
+/// the codes are packed into the entries (shift_storage::packed). Lists kept as runs
+/// (shift_storage::runs) have no `neighbours`: row a is coded in runs[offsets[a] .. offsets[a + 1]),
+/// no bytes for a non-target.
 struct neighbour_lists {
   std::vector<std::size_t> offsets{0};
   std::vector<std::uint32_t> neighbours;
   std::vector<shift_code> shifts;
+  std::vector<std::uint8_t> runs;
+  bool in_runs = false;         ///< whether the rows are coded in `runs`
+  std::size_t run_entries = 0;  ///< the entries of all rows coded in `runs`
 
   std::size_t size() const { return offsets.size() - 1; }
-  std::size_t count(std::size_t a) const { return offsets[a + 1] - offsets[a]; }
-  std::size_t total() const { return neighbours.size(); }
+  std::size_t count(std::size_t a) const {
+    if (!in_runs || offsets[a + 1] == offsets[a]) return offsets[a + 1] - offsets[a];
+    return runs::row_count(runs.data() + offsets[a]);
+  }
+  std::size_t total() const { return in_runs ? run_entries : neighbours.size(); }
 };
 
 /// How a search writes its lists. By default row a is particle a of the tree (empty for a

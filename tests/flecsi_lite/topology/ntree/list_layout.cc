@@ -1,5 +1,6 @@
 // Tests of the list layouts of the group walk (list_layout): shift codes packed into the entries
-// carry the same neighbours and shifts as separate ones, on periodic and open domains; renamed
+// carry the same neighbours and shifts as separate ones, on periodic and open domains; rows
+// coded as runs decode to the packed entries, bit for bit, and any row survives its coding; renamed
 // rows and entries (the local tree's storage order) are the default lists, renamed; and a
 // repeated search writes the lists in place, with little spare room, walking twice only when
 // the lists outgrow the room of the last ones.
@@ -7,6 +8,9 @@
 #include "tests/flecsi_lite/topology/ntree/search_checks.hh"
 
 #include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
 
 namespace nt = flecsi_lite::topology::ntree;
 using namespace ntree_test;
@@ -20,6 +24,23 @@ nt::neighbour_lists unpacked(const nt::neighbour_lists& packed, bool periodic) {
   for (const std::uint32_t entry : packed.neighbours) {
     lists.neighbours.push_back(nt::packed_neighbour(entry));
     if (periodic) lists.shifts.push_back(nt::packed_shift(entry));
+  }
+  return lists;
+}
+
+// Decodes lists kept as runs into packed lists.
+nt::neighbour_lists decoded(const nt::neighbour_lists& coded) {
+  REQUIRE(coded.in_runs);
+  REQUIRE(coded.neighbours.empty());
+  nt::neighbour_lists lists;
+  lists.offsets.assign(1, 0);
+  for (std::size_t a = 0; a < coded.size(); ++a) {
+    std::vector<std::uint32_t> row(coded.count(a) + nt::runs::decode_padding);
+    if (coded.count(a) > 0)
+      REQUIRE(nt::runs::decode_row(coded.runs.data() + coded.offsets[a], row.data()) == coded.count(a));
+    row.resize(coded.count(a));
+    lists.neighbours.insert(lists.neighbours.end(), row.begin(), row.end());
+    lists.offsets.push_back(lists.neighbours.size());
   }
   return lists;
 }
@@ -51,6 +72,65 @@ TEST_CASE("packed shift codes equal separate ones", "[ntree][list_layout]") {
       if (!periodic)
         for (const std::uint32_t entry : packed.neighbours) REQUIRE(nt::packed_shift(entry) == nt::zero_shift<3>);
     }
+  }
+}
+
+TEST_CASE("rows coded as runs decode to the packed entries", "[ntree][list_layout]") {
+  auto set = uniform<3>(3000, 95, 60);
+  sort_by_key(set, nt::curve::morton);
+  const auto tree = build_tree(set, 16);
+  const auto mask = random_targets(set.size(), 96);
+  for (const bool periodic : {true, false})
+    for (const bool some_targets : {false, true}) {
+      const auto space = unit_box(periodic);
+      nt::group_walk<3> walk({nt::interaction::symmetric, 2.0, some_targets ? mask.data() : nullptr});
+      nt::neighbour_lists packed, coded;
+      nt::list_layout layout;
+      layout.shifts = nt::shift_storage::packed;
+      walk.find_neighbours(tree, space, packed, layout);
+      layout.shifts = nt::shift_storage::runs;
+      walk.find_neighbours(tree, space, coded, layout);
+      REQUIRE(coded.size() == packed.size());
+      REQUIRE(coded.total() == packed.total());
+      const auto lists = decoded(coded);
+      REQUIRE(lists.offsets == packed.offsets);
+      REQUIRE(lists.neighbours == packed.neighbours);
+      // Runs of consecutive neighbours (the particles of a leaf): well under 2 bytes an entry.
+      REQUIRE(coded.runs.size() < 2 * coded.total());
+    }
+}
+
+TEST_CASE("any row survives its coding as runs", "[ntree][list_layout]") {
+  std::mt19937 random(97);
+  const auto check = [](const std::vector<std::uint32_t>& row) {
+    std::vector<std::uint8_t> bytes(nt::runs::max_row_bytes(row.size()));
+    const std::size_t size = nt::runs::encode_row(row.data(), row.size(), bytes.data());
+    REQUIRE(size == nt::runs::row_bytes(row.data(), row.size()));
+    REQUIRE(size <= bytes.size());
+    REQUIRE(nt::runs::row_count(bytes.data()) == row.size());
+    std::vector<std::uint32_t> back(row.size() + nt::runs::decode_padding, 7);
+    REQUIRE(nt::runs::decode_row(bytes.data(), back.data()) == row.size());
+    back.resize(row.size());
+    REQUIRE(back == row);
+  };
+  check({});
+  const std::uint32_t last = nt::packed_index_mask;
+  // The largest index under every shift code, jumps backwards, repeats, a run across the index
+  // bits' end (b = 2^27 - 1 then b = 0 under the next code is the next 32-bit value).
+  check({nt::packed_entry(last, 26), nt::packed_entry(0, 0), nt::packed_entry(last, 0), nt::packed_entry(0, 1)});
+  check({nt::packed_entry(5, 13), nt::packed_entry(5, 13), nt::packed_entry(4, 13), nt::packed_entry(5, 12)});
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<std::uint32_t> row(random() % 300);
+    std::uint32_t b = random() % (last + 1);
+    for (auto& entry : row) {
+      const unsigned pick = random() % 8;
+      b = pick < 5 ? (b + 1) & last : pick < 7 ? random() % (last + 1) : b;  // mostly runs
+      entry = nt::packed_entry(b, static_cast<nt::shift_code>(random() % 4 == 0 ? random() % 27 : 13));
+    }
+    if (trial % 2)
+      std::sort(row.begin(), row.end(),
+                [](std::uint32_t x, std::uint32_t y) { return nt::packed_neighbour(x) < nt::packed_neighbour(y); });
+    check(row);
   }
 }
 
@@ -120,4 +200,25 @@ TEST_CASE("repeated searches write the lists in place", "[ntree][list_layout]") 
   REQUIRE(walk.repeated_list_passes() == 2);
   require_equal(lists, brute_force(grown, space, options));
   REQUIRE(lists.neighbours.capacity() <= lists.total() + lists.total() / 8);
+
+  // The same with rows coded as runs: regions in bytes, a second pass when they are outgrown.
+  nt::list_layout layout;
+  layout.shifts = nt::shift_storage::runs;
+  const auto packed_of = [&](const auto& t) {
+    nt::list_layout plain;
+    plain.shifts = nt::shift_storage::packed;
+    nt::neighbour_lists packed;
+    nt::group_walk<3>(options).find_neighbours(t, space, packed, plain);
+    return packed.neighbours;
+  };
+  nt::group_walk<3> coding(options);
+  nt::neighbour_lists coded;
+  coding.find_neighbours(tree, space, coded, layout);
+  coding.find_neighbours(tree, space, coded, layout);
+  REQUIRE(coding.repeated_list_passes() == 1);
+  REQUIRE(decoded(coded).neighbours == packed_of(tree));
+  coding.find_neighbours(grown_tree, space, coded, layout);
+  REQUIRE(coding.repeated_list_passes() == 2);
+  REQUIRE(decoded(coded).neighbours == packed_of(grown_tree));
+  REQUIRE(coded.runs.capacity() <= coded.runs.size() + coded.runs.size() / 8);
 }

@@ -30,8 +30,9 @@ namespace flecsi_lite::topology::ntree {
 /// its lists more than once (a growing buffer per chunk and a gathered copy held them three times).
 class neighbour_list_builder {
  public:
-  /// How the entries are written: plain indices, with separate shift codes, or packed.
-  enum class entries { plain, separate_shifts, packed };
+  /// How the entries are written: plain indices, with separate shift codes, packed, or packed
+  /// and coded as runs (then a chunk's region and sizes are in bytes of neighbour_lists::runs).
+  enum class entries { plain, separate_shifts, packed, runs };
 
   class chunk {
    public:
@@ -41,6 +42,14 @@ class neighbour_list_builder {
     void append(std::size_t row, std::size_t count, const Neighbour& neighbour, const Shift& shift,
                 const std::size_t* rename, entries kind) {
       if (row != row_) start_row(row);
+      if (kind_ == entries::runs) {  // coded when the row is complete (finish_row)
+        const std::size_t before = row_entries_.size();
+        row_entries_.resize(before + count);
+        std::uint32_t* const out = row_entries_.data() + before;
+        for (std::size_t i = 0; i < count; ++i)
+          out[i] = packed_entry(static_cast<std::uint32_t>(rename ? rename[neighbour(i)] : neighbour(i)), shift(i));
+        return;
+      }
       if (overflowed_ || size_ + count > capacity_) {  // outgrown: count only, finish() asks for another pass
         overflowed_ = true;
         size_ += count;
@@ -73,43 +82,66 @@ class neighbour_list_builder {
     friend class neighbour_list_builder;
     static constexpr std::size_t no_row = static_cast<std::size_t>(-1);
 
-    void start(std::size_t* counts, std::uint32_t* region, shift_code* region_shifts, std::size_t capacity) {
+    void start(entries kind, std::size_t* counts, void* region, shift_code* region_shifts, std::size_t capacity) {
+      kind_ = kind;
       counts_ = counts;
-      neighbours_ = region;
+      neighbours_ = static_cast<std::uint32_t*>(region);
+      run_bytes_ = static_cast<std::uint8_t*>(region);
       shifts_ = region_shifts;
+      entries_ = 0;
       capacity_ = capacity;
       size_ = 0;
       row_ = no_row;
       overflowed_ = false;
     }
-    // The count of the row just finished goes to counts_ (one write per row, not per entry).
     void start_row(std::size_t row) {
       if (row_ == no_row)
         first_row_ = row;
       else
-        counts_[row_] = size_ - row_begin_;
+        finish_row();
       row_ = row;
       row_begin_ = size_;
     }
+    // The size of the row just finished goes to counts_ (one write per row, not per entry); rows
+    // kept as runs are coded first, straight into the region when their largest size fits.
+    void finish_row() {
+      if (kind_ == entries::runs) {
+        const std::size_t count = row_entries_.size();
+        std::size_t bytes = runs::max_row_bytes(count);
+        if (overflowed_ || size_ + bytes > capacity_) bytes = runs::row_bytes(row_entries_.data(), count);
+        if (overflowed_ || size_ + bytes > capacity_)
+          overflowed_ = true;
+        else
+          bytes = runs::encode_row(row_entries_.data(), count, run_bytes_ + size_);
+        size_ += bytes;
+        entries_ += count;
+        row_entries_.clear();
+      }
+      counts_[row_] = size_ - row_begin_;
+    }
     void close() {
-      if (row_ != no_row) counts_[row_] = size_ - row_begin_;
+      if (row_ != no_row) finish_row();
     }
     std::size_t* counts_ = nullptr;  // out.offsets, which hold the counts until the scan
     std::size_t first_row_ = 0;      // row of the chunk's first entry
     std::size_t row_ = no_row, row_begin_ = 0;
     std::size_t size_ = 0, capacity_ = 0;
+    entries kind_ = entries::plain;
     std::uint32_t* neighbours_ = nullptr;  // its region of the lists
+    std::uint8_t* run_bytes_ = nullptr;    // the same region of runs
     shift_code* shifts_ = nullptr;
-    bool overflowed_ = false;  // counting only since its region was full
+    bool overflowed_ = false;                 // counting only since its region was full
+    std::vector<std::uint32_t> row_entries_;  // the row being collected (runs)
+    std::size_t entries_ = 0;                 // entries of the rows coded as runs
   };
 
   /// The entries for `layout` on a domain that is periodic or not, for `particles` particles
   /// (packed entries hold at most 2^27).
   static entries entries_for(const list_layout& layout, bool periodic, std::size_t particles) {
-    if (layout.shifts == shift_storage::packed) {
+    if (layout.shifts == shift_storage::packed || layout.shifts == shift_storage::runs) {
       if (particles > packed_index_mask + std::size_t{1})
         throw std::length_error("ntree: packed neighbour lists hold at most 2^27 particles");
-      return entries::packed;
+      return layout.shifts == shift_storage::runs ? entries::runs : entries::packed;
     }
     return periodic ? entries::separate_shifts : entries::plain;
   }
@@ -124,12 +156,18 @@ class neighbour_list_builder {
     std::vector<std::size_t> region(chunk_count + 1, 0);
     for (std::size_t c = 0; c < chunk_count; ++c)
       region[c + 1] = region[c] + room_[c] + room_[c] / 16 + (room_[c] ? 64 : 0);
-    const bool with_shifts = kind == entries::separate_shifts;
-    fit(out.neighbours, region[chunk_count]);
+    const bool with_shifts = kind == entries::separate_shifts, in_runs = kind == entries::runs;
+    fit(out.neighbours, in_runs ? 0 : region[chunk_count]);
     fit(out.shifts, with_shifts ? region[chunk_count] : 0);
-    for (std::size_t c = 0; c < chunk_count; ++c)
-      chunks_[c].start(out.offsets.data(), out.neighbours.data() + region[c],
-                       with_shifts ? out.shifts.data() + region[c] : nullptr, region[c + 1] - region[c]);
+    fit(out.runs, in_runs ? region[chunk_count] : 0);
+    out.in_runs = in_runs;
+    out.run_entries = 0;
+    for (std::size_t c = 0; c < chunk_count; ++c) {
+      void* region_start = in_runs ? static_cast<void*>(out.runs.data() + region[c])
+                                   : static_cast<void*>(out.neighbours.data() + region[c]);
+      chunks_[c].start(kind, out.offsets.data(), region_start, with_shifts ? out.shifts.data() + region[c] : nullptr,
+                       region[c + 1] - region[c]);
+    }
   }
 
   chunk& operator[](std::size_t c) { return chunks_[c]; }
@@ -151,19 +189,26 @@ class neighbour_list_builder {
     const std::size_t rows = out.offsets.size() - 1;
     const std::size_t total =
       flecsi_lite::exclusive_scan(out.offsets.data(), rows + 1, "ntree::neighbour_lists::offsets");
-    const bool with_shifts = kind == entries::separate_shifts;
+    const bool with_shifts = kind == entries::separate_shifts, in_runs = kind == entries::runs;
     // Chunk c's place starts at the sum of the sizes of the chunks before it, at most where its
     // region starts: moved in chunk order, no entry is overwritten before it moved.
     for (std::size_t c = 0; c < chunk_count_; ++c) {
       const chunk& part = chunks_[c];
+      out.run_entries += part.entries_;
       if (part.size_ == 0) continue;
       const std::size_t at = out.offsets[part.first_row_];
-      std::memmove(out.neighbours.data() + at, part.neighbours_, part.size_ * sizeof(std::uint32_t));
+      if (in_runs)
+        std::memmove(out.runs.data() + at, part.run_bytes_, part.size_);
+      else
+        std::memmove(out.neighbours.data() + at, part.neighbours_, part.size_ * sizeof(std::uint32_t));
       if (with_shifts) std::memmove(out.shifts.data() + at, part.shifts_, part.size_ * sizeof(shift_code));
     }
-    out.neighbours.resize(total);
+    if (in_runs)
+      out.runs.resize(total);
+    else
+      out.neighbours.resize(total);
     out.shifts.resize(with_shifts ? total : 0);
-    for (std::size_t c = 0; c < chunk_count_; ++c) chunks_[c].start(nullptr, nullptr, nullptr, 0);
+    for (std::size_t c = 0; c < chunk_count_; ++c) chunks_[c].start(kind, nullptr, nullptr, nullptr, 0);
     return true;
   }
 
