@@ -33,11 +33,12 @@ namespace tree = flecsi_lite::topology::ntree;
 /// (list_reuse.hh; Verlet 1967). The pair tasks skip the entries beyond the kernel support, so a
 /// sum takes the same pairs in the same order as over the lists of a search now.
 /// Each entry packs b with its shift code, and each row is kept as runs of consecutive
-/// neighbours (ntree::shift_storage::runs): about 1 byte per entry instead of 4. The pair loops
-/// read a target's row decoded (neighbour_walk::row), entry for entry the packed row.
+/// neighbours (ntree::shift_storage::runs, the `neighbour_lists` key's default): about 1.2 bytes
+/// per entry instead of 4. The pair loops read a target's row decoded (neighbour_walk::row),
+/// entry for entry the packed row.
 template<int D>
 struct neighbourhood {
-  tree::neighbour_lists lists;  ///< offsets per owned particle, rows of packed entries (b, shift code) as runs
+  tree::neighbour_lists lists;  ///< offsets per owned particle, rows of packed entries (b, shift code), as runs or not
   std::array<vector<D>, tree::shift_code_count<D>> shift_table{};  ///< displacement per shift code
   double reach = 2.0;               ///< the reach the lists hold, in units of h (>= the kernel support 2)
   double list_reach = 2.0;          ///< the reach they were searched with (>= reach)
@@ -248,15 +249,14 @@ void finish_search(const tree::local_tree<D>& local, neighbourhood<D>& out, doub
 
 /// The search task: fills `out` from the local tree's search over owned targets (symmetric
 /// criterion, reach `support` (1 + list_skin)), with the positions and h it searched with (the
-/// tree's sorted copies, current after a build or refit). The tree keeps its search workspaces,
-/// hence rw.
+/// tree's sorted copies, current after a build or refit), its rows kept as `storage` (runs or
+/// packed). The tree keeps its search workspaces, hence rw.
 template<int D>
 void search_neighbours(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
                        typename tracked_neighbourhood<D>::template accessor<flecsi_lite::wo> out, double support,
-                       double list_skin, tree::domain<D> space) {
+                       double list_skin, tree::domain<D> space, tree::shift_storage storage) {
   const double list_reach = support * (1 + list_skin);
-  local->find_neighbours(tree::interaction::symmetric, list_reach, space, out->lists, search_groups,
-                         tree::shift_storage::runs);
+  local->find_neighbours(tree::interaction::symmetric, list_reach, space, out->lists, search_groups, storage);
   detail::finish_search(*local, *out, support, list_reach, space);
 }
 
@@ -266,20 +266,21 @@ template<int D>
 void search_active_neighbours(
   typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
   typename tracked_neighbourhood<D>::template accessor<flecsi_lite::wo> out, double support, tree::domain<D> space,
-  std::int64_t next, ro<std::int64_t> step_end) {
+  tree::shift_storage storage, std::int64_t next, ro<std::int64_t> step_end) {
   std::vector<std::uint8_t> active(step_end.size());
   flecsi_lite::forall(
     active.size(), [&](std::size_t a) { active[a] = step_end(a) == next; }, "sph::search_active_neighbours::mask");
-  local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, {},
-                            tree::shift_storage::runs);
+  local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, {}, storage);
   detail::finish_search(*local, *out, support, support, space);
 }
 
 /// Launches the search of `out` on the tree of `p` (after ntree::distribute() or
 /// refresh_local_tree(), which the executor orders before it), `list_skin` beyond the reach.
 template<int D>
-void find_neighbours(particle_tree<D>& p, tracked_neighbourhood<D>& out, double list_skin) {
-  flecsi_lite::execute<search_neighbours<D>>(p.local_tree_object(), out, p.settings().support, list_skin, p.space());
+void find_neighbours(particle_tree<D>& p, tracked_neighbourhood<D>& out, double list_skin,
+                     tree::shift_storage storage = tree::shift_storage::runs) {
+  flecsi_lite::execute<search_neighbours<D>>(p.local_tree_object(), out, p.settings().support, list_skin, p.space(),
+                                             storage);
 }
 
 /// Two distinct particles at the same position, the pair with the smallest ids (first < second);

@@ -97,6 +97,8 @@ physics_block declare_physics(const physics_settings& defaults) {
   p.real("list_skin", &physics_settings::list_skin,
          "neighbour lists reach (1 + skin) times the search: search again when used up")
     .range(0, 10);
+  p.choice("neighbour_lists", &physics_settings::neighbour_lists, neighbour_list_names(),
+           "neighbour lists as runs (about a third of the memory) or packed (a few percent faster)");
   p.choice("key_order", &physics_settings::key_order, key_order_names(),
            "space-filling curve of the distribution (hilbert: compact domains, fewer ghosts)");
   p.choice("balance", &physics_settings::balance, balance_names(),
@@ -217,6 +219,13 @@ const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::balance>& b
   using flecsi_lite::topology::ntree::balance;
   static const flecsi_lite::runtime::name_table<balance> table{"balance",
                                                                {{"count", balance::count}, {"work", balance::work}}};
+  return table;
+}
+
+const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::shift_storage>& neighbour_list_names() {
+  using flecsi_lite::topology::ntree::shift_storage;
+  static const flecsi_lite::runtime::name_table<shift_storage> table{
+    "neighbour lists", {{"runs", shift_storage::runs}, {"packed", shift_storage::packed}}};
   return table;
 }
 

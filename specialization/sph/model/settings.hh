@@ -27,6 +27,8 @@ const flecsi_lite::runtime::name_table<gravity_criterion>& gravity_criterion_nam
 /// The parameter-file names of the key orders ("hilbert", "morton") and balances ("count", "work").
 const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::curve>& key_order_names();
 const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::balance>& balance_names();
+/// The parameter-file names of the neighbour lists' storage ("runs", "packed").
+const flecsi_lite::runtime::name_table<flecsi_lite::topology::ntree::shift_storage>& neighbour_list_names();
 
 /// The parameter-file names of the viscosity switch's d(div v)/dt estimates ("acceleration",
 /// "difference"), alpha_loc forms ("price", "cullen_dehnen") and starting alphas ("alpha_max",
@@ -104,6 +106,11 @@ struct physics_settings {
   /// more than the searches saved); slow flows gain with 0.1 (benchmarks/sph/README.md,
   /// "Neighbour lists kept over steps").
   double list_skin = 0.0;
+  /// How the neighbour lists are kept: as runs of consecutive neighbours (1.2 bytes an entry on
+  /// Sedov's lattice) or packed (4 bytes an entry; a step of every particle about 7% faster on one
+  /// thread). The pairs, their order and so every result are the same to the bit
+  /// (docs/performance.md, "Neighbour lists as runs").
+  flecsi_lite::topology::ntree::shift_storage neighbour_lists = flecsi_lite::topology::ntree::shift_storage::runs;
   /// The space-filling curve that orders and distributes the particles (seed section 2.3.1):
   /// Hilbert's domains are more compact than Morton's, so they need fewer ghosts.
   flecsi_lite::topology::ntree::curve key_order = flecsi_lite::topology::ntree::curve::hilbert;

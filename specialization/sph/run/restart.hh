@@ -149,7 +149,7 @@ void distribute_as_written(simulation<D>& s) {
   swap();
   ++s.distributions;
   p.refresh_local_tree();
-  find_neighbours(p, s.neighbours, s.physics.list_skin);
+  find_neighbours(p, s.neighbours, s.physics.list_skin, s.physics.neighbour_lists);
   ++s.searches;
 }
 

@@ -136,7 +136,7 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
     if (s.physics.individual_time_steps())
       find_active_neighbours(s);
     else
-      find_neighbours(p, s.neighbours, s.physics.list_skin);
+      find_neighbours(p, s.neighbours, s.physics.list_skin, s.physics.neighbour_lists);
     ++s.searches;
     if (redistribute)
       s.balance.expect(count_imbalance,

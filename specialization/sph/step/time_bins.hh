@@ -386,7 +386,8 @@ template<int D>
 void find_active_neighbours(simulation<D>& s) {
   auto& p = *s.particles;
   flecsi_lite::execute<search_active_neighbours<D>>(p.local_tree_object(), s.neighbours, p.settings().support,
-                                                    p.space(), s.clock.next, fields<D>::step_end(p));
+                                                    p.space(), s.physics.neighbour_lists, s.clock.next,
+                                                    fields<D>::step_end(p));
 }
 
 template<int D>
