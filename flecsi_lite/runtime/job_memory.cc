@@ -1,6 +1,9 @@
 // The memory of a job's ranks (job_memory.hh).
 #include "flecsi_lite/runtime/job_memory.hh"
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -54,6 +57,12 @@ double detect_job_memory(MPI_Comm comm) {
   double job = 0;
   MPI_Allreduce(&node_memory, &job, 1, MPI_DOUBLE, MPI_SUM, comm);
   return job;
+}
+
+void return_free_memory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
 }
 
 }  // namespace flecsi_lite::runtime

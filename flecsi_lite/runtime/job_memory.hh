@@ -23,4 +23,11 @@ double physical_memory();
 /// an upper bound of what the job can allocate.
 double detect_job_memory(MPI_Comm comm);
 
+/// Gives the memory the allocator holds free back to the system (glibc: malloc_trim; elsewhere
+/// nothing), so that a rank's resident size is what it uses. glibc keeps large freed blocks in
+/// its heap once a block of their size was freed (its mmap threshold rises to it), and counts
+/// them resident: Sedov 3D 100^3 peaked at 731 MB instead of 654 MB (docs/performance.md,
+/// "Neighbour lists as runs"). Call it where large arrays were just freed.
+void return_free_memory();
+
 }  // namespace flecsi_lite::runtime

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
+#include "flecsi_lite/runtime/job_memory.hh"
 #include "flecsi_lite/runtime/timers.hh"
 #include "flecsi_lite/topology/ntree/distributed/branch_sharing.hh"
 #include "flecsi_lite/topology/ntree/distributed/ghost_exchange.hh"
@@ -230,6 +231,8 @@ distribution_stats ntree<D>::distribute() {
 
   build_local_tree();  // the executor copies the built-in fields' ghosts first
   stats.time_tree = detail::lap(clock, "ntree::distribute local tree");
+  // The old layout's arrays are freed (exchange buffers, sorted copies, the fields' old storage).
+  runtime::return_free_memory();
   stats.time_total = MPI_Wtime() - start;
 
   // Statistics over the ranks.
