@@ -33,6 +33,8 @@ void brute_force_neighbours(const point<D>* x, const double* h, std::size_t n, c
     }
   };
   out.offsets.assign(n + 1, 0);
+  out.runs.clear();
+  out.in_runs = false;
   flecsi_lite::forall(
     n,
     [&](std::size_t a) {

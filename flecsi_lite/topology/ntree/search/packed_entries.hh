@@ -1,14 +1,15 @@
 // Entries of neighbour lists that pack the neighbour b with its image shift code in 4 bytes
-// (shift_storage::packed), and rows of them coded as runs (shift_storage::runs): a row of packed
-// entries (b, shift code) in ascending b is mostly runs of consecutive neighbours b, b + 1, ...
-// under one shift (the particles of a leaf, in key order). A run of up to 8 entries takes 3 bytes,
-// its (length, shift code) in one and its jump from the end of the previous run in two (four
-// more for the rare longer jump): about 1 byte an entry instead of 4 (issue 36 item 4;
-// run-length and delta coding as in compressed neighbour lists, e.g. Thaler & Keller 2026).
-// Fixed widths, not variable-length integers, so that decoding a run neither waits for the
-// previous run's length in bytes nor branches on it: a pair loop decodes its row at about a
-// cycle an entry. Decoding gives back the packed entries bit for bit and in their order, whatever
-// that order is (a jump backwards is coded too), so sums over a decoded row are the plain row's.
+// (shift_storage::packed), and rows of them coded as runs (shift_storage::runs): a row of
+// packed entries (b, shift code) in ascending b is mostly runs of consecutive neighbours b,
+// b + 1, ... under one shift (the particles of a leaf, in key order). A run of up to 8 entries
+// takes 3 bytes, its (length, shift code) in one and its jump from the end of the previous run in
+// two (four more for the rare longer jump): 1.2 bytes an entry on Sedov's lattice instead of 4
+// (issue 36 item 4; run-length and delta coding as in compressed neighbour lists, e.g. Thaler &
+// Keller 2026). Fixed widths, not variable-length integers, so that decoding a run neither waits
+// for the previous run's length in bytes nor branches on it (decoding takes 2% of a step's
+// samples, coding 6%; docs/performance.md, "Neighbour lists as runs"). Decoding gives back the
+// packed entries bit for bit and in their order, whatever that order is (a jump backwards is
+// coded too), so sums over a decoded row are the plain row's.
 #pragma once
 
 #include "flecsi_lite/topology/ntree/periodic.hh"
@@ -141,7 +142,8 @@ inline std::size_t decode_row(const std::uint8_t* in, std::uint32_t* out) {
       in += 4;
     }
     const std::int64_t first = expected + unzigzag(jump);
-    const std::uint32_t start = static_cast<std::uint32_t>(first) | (length_and_code & 31) << packed_index_bits;
+    const std::uint32_t start = static_cast<std::uint32_t>(first) | (length_and_code & ((1u << shift_bits) - 1))
+                                                                      << packed_index_bits;
     for (std::size_t i = 0; i < longest_run; ++i) out[n + i] = start + static_cast<std::uint32_t>(i);  // one store
     const std::size_t length = (length_and_code >> shift_bits) + 1;
     n += length;

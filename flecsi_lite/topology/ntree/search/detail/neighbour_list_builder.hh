@@ -42,7 +42,7 @@ class neighbour_list_builder {
     void append(std::size_t row, std::size_t count, const Neighbour& neighbour, const Shift& shift,
                 const std::size_t* rename, entries kind) {
       if (row != row_) start_row(row);
-      if (kind_ == entries::runs) {  // coded when the row is complete (finish_row)
+      if (kind == entries::runs) {  // coded when the row is complete (finish_row)
         const std::size_t before = row_entries_.size();
         row_entries_.resize(before + count);
         std::uint32_t* const out = row_entries_.data() + before;
