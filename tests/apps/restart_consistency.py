@@ -8,7 +8,9 @@
 # carry checksums (root attribute 'checksums'): a changed value that no other check refuses (a
 # global-step dt one ulp off, another step counter) is refused naming it, and so is a checkpoint
 # without checksums; the dt of 1e300 is refused by the checksums, and, with checksums made to
-# match it (as a faulty writer would), by the check against what was left of the run.
+# match it (as a faulty writer would), by the check against what was left of the run. The
+# walls' accumulators are written with walls only, and a checkpoint of walls without them is
+# refused.
 #
 #   restart_consistency.py SEDOV SEDOV_2D_PAR FLUID DAM_BREAK_PAR MPIEXEC NUMPROC_FLAG [MPIEXEC_FLAGS...]
 import os
@@ -168,6 +170,16 @@ with h5py.File("fluid.h5part", "r") as f:
     fluid_dt = float(f["Step#0"].attrs["dt"])
 refused(fluid, dam_break_par, "fluid_dt_next", lambda f: f["Step#0"].attrs.__setitem__("dt", np.nextafter(fluid_dt, 1)),
         "Step#0 attribute 'dt' differs", "fluid.h5part", fluid_resume, ranks=2)
+
+# The walls' accumulators are in the checkpoints of runs with walls only (the "walls" feature):
+# the dam break's has them, Sedov's (no walls) not; a checkpoint with walls but without them is
+# refused, naming the dataset.
+with h5py.File("fluid.h5part", "r") as f, h5py.File("individual.h5part", "r") as g:
+    check("boundary_work" in f["Step#0"] and "impulse_x" in f["Step#0"], "fluid: the walls' accumulators are written")
+    check("boundary_work" not in g["Step#0"] and "impulse_x" not in g["Step#0"],
+          "individual (no walls): no walls' accumulators written")
+refused(fluid, dam_break_par, "fluid_without_wall_work", lambda f: f["Step#0"].__delitem__("boundary_work"),
+        "holds wall particles (kind = 1) but no dataset boundary_work", "fluid.h5part", fluid_resume)
 
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)

@@ -16,8 +16,8 @@ namespace flecsph::sph {
 /// Whether run `s` has `feature`, a name a field's definition may give (persist only_with): the
 /// SPH features are "gravity" (gravity = on), "individual_time_steps" (time_steps = individual),
 /// "viscosity_switch" (viscosity_switch = on), "balsara_switch" (balsara_switch = on),
-/// "velocity_gradients" (div v is kept: the Balsara switch or individual time steps) and
-/// "pressure_energy" (formulation = pressure_energy).
+/// "velocity_gradients" (div v is kept: the Balsara switch or individual time steps),
+/// "pressure_energy" (formulation = pressure_energy) and "walls" (some particle is a wall).
 template<int D>
 bool has_feature(const simulation<D>& s, const std::string& feature) {
   if (feature == "gravity") return s.physics.gravity.enabled;
@@ -26,9 +26,10 @@ bool has_feature(const simulation<D>& s, const std::string& feature) {
   if (feature == "balsara_switch") return s.physics.balsara;
   if (feature == "velocity_gradients") return s.physics.balsara || s.physics.individual_time_steps();
   if (feature == "pressure_energy") return s.physics.pressure_energy();
+  if (feature == "walls") return s.has_walls;
   throw std::logic_error("sph: a field is declared only_with(\"" + feature +
                          "\"), which is no feature of an SPH run (gravity, individual_time_steps, "
-                         "viscosity_switch, balsara_switch, velocity_gradients, pressure_energy)");
+                         "viscosity_switch, balsara_switch, velocity_gradients, pressure_energy, walls)");
 }
 
 /// The registered fields that the files of run `s` hold (as their roles say): a field declared

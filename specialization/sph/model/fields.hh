@@ -43,7 +43,7 @@ namespace flecsph::sph {
 /// `moving_particles_only`: walls have no such snapshot dataset; files/snapshot_layout.hh), and
 /// a field that exists in files only with a feature of the run says so (`only_with`: "gravity",
 /// "individual_time_steps", "viscosity_switch", "balsara_switch", "velocity_gradients",
-/// "pressure_energy"; such a
+/// "pressure_energy", "walls"; such a
 /// field also takes memory only in the runs that have its feature; has_feature() in
 /// files/particle_output.hh says which a run has).
 ///
@@ -56,7 +56,7 @@ namespace flecsph::sph {
 /// the order in which a file's datasets are created (readers find them by name). Output and checkpoints hold
 /// x y z, vx vy vz (zeros beyond D), m rho P u h id, kind (int32), cs, du_dt; checkpoints also
 /// what the next step reads besides (accelerations and du/dt of the last force evaluation, grad-h
-/// and pressure terms, the Balsara inputs with that switch, the walls' accumulators), so that a restart continues
+/// and pressure terms, the Balsara inputs with that switch, the walls' accumulators with walls), so that a restart continues
 /// bitwise, and the distribution bookkeeping. Initial data: x [y z], m, h, u required; vx vy vz,
 /// rho, id, kind optional. The rest (half-step values with global steps) is recomputed in every
 /// step; individual time steps add their bins and step bounds (and the half-step values).
@@ -143,10 +143,11 @@ struct fields {
                                                              persist::restart().only_with("velocity_gradients")};
   static inline const definition<double> velocity_curl{"curl_v", persist::restart().only_with("balsara_switch")};
   static inline const definition<double> balsara{"balsara", persist::restart().only_with("balsara_switch")};
-  /// Accumulated (per unit mass) forces and heating the fluid exerted on a wall particle.
+  /// Accumulated (per unit mass) forces and heating the fluid exerted on a wall particle: only in
+  /// runs with walls (32 bytes a particle otherwise).
   static inline const definition<vector<D>> boundary_impulse{
-    "boundary_impulse", persist::as("impulse_x", "impulse_y", "impulse_z").restart()};
-  static inline const definition<double> boundary_work{"boundary_work", persist::restart()};
+    "boundary_impulse", persist::as("impulse_x", "impulse_y", "impulse_z").restart().only_with("walls")};
+  static inline const definition<double> boundary_work{"boundary_work", persist::restart().only_with("walls")};
   // Self-gravity only (gravity = on; with it off no file holds them, only_with("gravity"), and
   // no memory is taken): the potential G Phi (output and restart, for the
   // potential energy), zeta / Omega of the grad-h gravity term (Price & Monaghan 2007), and the

@@ -89,6 +89,11 @@ struct simulation {
   bool restarted = false;
   /// Distribute the particles at the next search (the first search of a run does).
   bool redistribute_next = false;
+  /// Whether any particle of the run is a wall: the walls' accumulators (boundary_impulse,
+  /// boundary_work) take memory and go to the checkpoints only then (the "walls" feature). The
+  /// apps' control model finds it when the particles exist (find_walls); true until then, so that
+  /// a driver of its own that creates walls keeps their accumulators.
+  bool has_walls = true;
   /// True in "initialize" (the force evaluation at t = 0), false from its diagnostics on: what an
   /// action of the force_evaluation stage that belongs to t = 0 only tests.
   bool initializing = true;

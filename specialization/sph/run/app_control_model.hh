@@ -6,6 +6,7 @@
 #pragma once
 
 #include "specialization/sph/model/settings.hh"
+#include "specialization/sph/model/walls.hh"
 #include "specialization/sph/run/app_state.hh"
 #include "specialization/sph/run/banner.hh"
 #include "specialization/sph/run/checkpoints.hh"
@@ -42,12 +43,15 @@ flecsi_lite::control::control_model<State> make_app_control_model(app_problem<St
   m.action("initial_data", "particles", [problem](State& s) {
     problem.set_domain(s);
     check_gravity_domain<D>(s.physics, s.tree_settings.periodic);
-    if (!s.files.restart_file.empty())
-      detail::restart<D>(s);
-    else if (!s.files.initial_data.empty())
+    if (!s.files.restart_file.empty()) {
+      detail::restart<D>(s);  // has_walls as its checkpoint says
+      return;
+    }
+    if (!s.files.initial_data.empty())
       detail::read_initial_particles<D>(s);
     else
       problem.create_particles(s);
+    find_walls<D>(s);
   });
   m.action("initialize", "describe_particles", [](State& s) { detail::describe_particles<D>(s); })
     .after("force_evaluation");

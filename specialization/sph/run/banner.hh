@@ -6,6 +6,7 @@
 #include "specialization/physics/kernels.hh"
 #include "specialization/sph/model/fields.hh"
 #include "specialization/sph/model/tasks.hh"
+#include "specialization/sph/model/walls.hh"
 #include "specialization/sph/run/app_state.hh"
 
 #include "flecsi_lite/execution.hh"
@@ -18,12 +19,6 @@ namespace flecsph::sph {
 namespace detail {
 inline std::uint64_t rank_value(std::uint64_t value) { return value; }
 
-inline std::uint64_t fluid_count(ro<particle_kind> kind) {
-  std::uint64_t count = 0;
-  for (std::size_t a = 0; a < kind.size(); ++a) count += kind(a) == particle_kind::fluid;
-  return count;
-}
-
 /// The banner's SPH line: the particles as created (a lattice may hold fewer than asked for),
 /// per rank once distributed, the kernel and the equation of state.
 template<int D>
@@ -34,9 +29,9 @@ void describe_particles(app_state<D>& s) {
   const std::uint64_t owned = p.owned_size();
   const auto fewest = reduce<rank_value, reduction::min>(owned).get();
   const auto most = reduce<rank_value, reduction::max>(owned).get();
-  const auto fluid = reduce<fluid_count, reduction::sum>(fields<D>::kind(p)).get();
+  const std::uint64_t walls = count_walls<D>(s);
   auto line = flecsi_lite::log::info();
-  line << s.program << ": " << p.global_size() << " particles (" << fluid << " fluid, " << p.global_size() - fluid
+  line << s.program << ": " << p.global_size() << " particles (" << p.global_size() - walls << " fluid, " << walls
        << " walls), " << fewest << " to " << most << " per rank; kernel " << physics::kernel_name(s.physics.kernel)
        << ", eos ";
   if (!s.equation_of_state.empty())

@@ -18,6 +18,7 @@
 #include "specialization/sph/files/particle_output.hh"
 #include "specialization/sph/model/neighbourhood.hh"
 #include "specialization/sph/model/tasks.hh"
+#include "specialization/sph/model/walls.hh"
 #include "specialization/sph/run/restart_checks.hh"
 
 #include "flecsi_lite/data.hh"
@@ -231,7 +232,13 @@ flecsi_lite::io::run_state read_restart_checkpoint(simulation<D>& s, const std::
   detail::check_clock(in, contents.info, s.run.end_time);
   detail::check_ids(in);
   create_particles_for(s, in, 0);
+  // The walls' accumulators are in the checkpoints of runs with walls only.
+  s.has_walls = in.has_dataset(0, fields<D>::boundary_work.name());
   flecsi_lite::data::read_registered_fields(*s.particles, files_fields(s), in, 0, flecsi_lite::data::role::restart);
+  if (!s.has_walls && count_walls(s) > 0)
+    throw flecsi_lite::io::layout_error("checkpoint '" + path +
+                                        "' holds wall particles (kind = 1) but no dataset boundary_work: their "
+                                        "accumulated impulse and work are missing");
   s.time = contents.info.time;
   s.step = contents.info.step;
   s.dt = contents.info.dt;

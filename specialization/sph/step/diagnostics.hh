@@ -28,13 +28,14 @@ conserved_totals<D> measure_conserved(simulation<D>& s) {
   complete_deferred_fields(s);
   if (s.physics.gravity.enabled)
     return flecsi_lite::reduce<conserved_quantities_with_gravity<D>, conserved_reduction>(
-             f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p), f::boundary_impulse(p),
-             f::boundary_work(p), f::gravitational_potential(p))
+             f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p),
+             f::boundary_impulse(p).only_if(s.has_walls), f::boundary_work(p).only_if(s.has_walls),
+             f::gravitational_potential(p))
       .get()
       .totals();
   return flecsi_lite::reduce<conserved_quantities<D>, conserved_reduction>(
-           f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p), f::boundary_impulse(p),
-           f::boundary_work(p))
+           f::position()(p), f::velocity(p), f::mass()(p), f::internal_energy(p), f::kind(p),
+           f::boundary_impulse(p).only_if(s.has_walls), f::boundary_work(p).only_if(s.has_walls))
     .get()
     .totals();
 }

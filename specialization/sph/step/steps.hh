@@ -251,10 +251,10 @@ void first_kick_and_drift(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
   if (s.physics.individual_time_steps()) return first_kick_and_drift_bins(s);
-  flecsi_lite::execute<kick_drift<D>>(s.dt, p.space(), f::kind(p), f::position()(p), f::velocity(p),
-                                      f::velocity_half(p), f::internal_energy(p), f::internal_energy_half(p),
-                                      f::acceleration(p), f::internal_energy_rate(p), f::boundary_impulse(p),
-                                      f::boundary_work(p), f::drift(p));
+  flecsi_lite::execute<kick_drift<D>>(
+    s.dt, p.space(), f::kind(p), f::position()(p), f::velocity(p), f::velocity_half(p), f::internal_energy(p),
+    f::internal_energy_half(p), f::acceleration(p), f::internal_energy_rate(p),
+    f::boundary_impulse(p).only_if(s.has_walls), f::boundary_work(p).only_if(s.has_walls), f::drift(p));
 }
 
 template<int D>
@@ -264,7 +264,7 @@ void second_kick(simulation<D>& s) {
   if (s.physics.individual_time_steps()) return second_kick_bins(s);
   flecsi_lite::execute<kick<D>>(s.dt, f::kind(p), f::velocity_half(p), f::internal_energy_half(p), f::acceleration(p),
                                 f::internal_energy_rate(p), f::velocity(p), f::internal_energy(p),
-                                f::boundary_impulse(p), f::boundary_work(p));
+                                f::boundary_impulse(p).only_if(s.has_walls), f::boundary_work(p).only_if(s.has_walls));
 }
 
 /// The step just taken moves the clock; the next step is the global minimum of the particles'

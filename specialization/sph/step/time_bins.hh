@@ -398,8 +398,8 @@ void first_kick_and_drift_bins(simulation<D>& s) {
     s.clock, p.space(), s.physics.adaptive_smoothing_length, f::kind(p), f::position()(p), f::velocity(p),
     f::velocity_half(p), f::internal_energy(p), f::internal_energy_half(p), f::acceleration(p),
     f::internal_energy_rate(p), f::velocity_divergence(p), f::density(p), f::smoothing_length()(p),
-    f::boundary_impulse(p), f::boundary_work(p), f::drift(p), f::time_bin(p), f::step_begin(p), f::step_end(p),
-    f::smoothed_pressure(p).only_if(s.physics.pressure_energy()));
+    f::boundary_impulse(p).only_if(s.has_walls), f::boundary_work(p).only_if(s.has_walls), f::drift(p), f::time_bin(p),
+    f::step_begin(p), f::step_end(p), f::smoothed_pressure(p).only_if(s.physics.pressure_energy()));
 }
 
 template<int D>
@@ -409,7 +409,7 @@ void second_kick_bins(simulation<D>& s) {
   s.kicked = flecsi_lite::reduce<kick_bins<D>, flecsi_lite::reduction::sum>(
     s.clock, f::kind(p), f::velocity_half(p), f::internal_energy_half(p), f::acceleration(p),
     f::internal_energy_rate(p), f::step_begin(p), f::step_end(p), f::velocity(p), f::internal_energy(p),
-    f::boundary_impulse(p), f::boundary_work(p));
+    f::boundary_impulse(p).only_if(s.has_walls), f::boundary_work(p).only_if(s.has_walls));
 }
 
 /// With individual time steps: moves the clock to the end of the step just taken (`advance`),
