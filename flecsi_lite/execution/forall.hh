@@ -8,11 +8,13 @@
 //   forall(n, [&](std::size_t i) { y[i] = a * x[i]; }, "axpy");                 // even split
 //   forall(n, body, "tree walk", dynamic_schedule{});                           // uneven work
 //   forall_reduce(n, [&](std::size_t i, double& m) { m = std::max(m, x[i]); }, Kokkos::Max<double>(top), "max");
+//   const double top = forall_max(n, [&](std::size_t i) { return x[i]; }, 0.0, "max");  // the same, from 0
 //   const std::size_t total = exclusive_scan(counts, n + 1, "offsets");          // in place
 #pragma once
 
 #include "flecsi_lite/util/kokkos.hh"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -131,6 +133,16 @@ void forall_reduce(std::size_t n, const Body& body, Reducer reducer, const char*
       [&body](std::int64_t i, typename Reducer::value_type& partial) { body(static_cast<std::size_t>(i), partial); },
       part);
   });
+}
+
+/// The largest of `floor` and value(i) for i in [0, n), in parallel: a maximum, so the same in
+/// any order (`floor` when n = 0; Kokkos' Max alone would start at the lowest double).
+template<class Value>
+double forall_max(std::size_t n, const Value& value, double floor, const char* name = "flecsi_lite::forall_max") {
+  double top = floor;
+  forall_reduce(
+    n, [&value](std::size_t i, double& m) { m = std::max(m, value(i)); }, Kokkos::Max<double>(top), name);
+  return std::max(floor, top);
 }
 
 /// In-place exclusive prefix sum of values[0, n); returns the total.

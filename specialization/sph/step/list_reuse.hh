@@ -60,27 +60,21 @@ neighbour_slack measure_neighbour_slack(neighbours_ro<D> neighbours_object, tree
     slack.lists.displacement = infinite;
     return slack;
   }
-  // Maxima, in parallel: the same in any order. Kokkos starts them at the lowest double, the
-  // members at 0.
-  double largest_displacement = 0, largest_growth = 0;
-  flecsi_lite::forall_reduce(
-    h.size(),
-    [&](std::size_t a, double& top) {
-      double d2 = 0;
-      bool wrapped = false;
-      for (int k = 0; k < D; ++k) {
-        const double dx = x(a)[k] - n.listed_x[a][k];
-        wrapped = wrapped || (space.periodic[k] && 2 * std::fabs(dx) > space.period(k));
-        d2 += dx * dx;
-      }
-      top = std::max(top, wrapped ? infinite : std::sqrt(d2) / n.listed_h[a]);
-    },
-    Kokkos::Max<double>(largest_displacement), "sph::measure_neighbour_slack::displacement");
-  flecsi_lite::forall_reduce(
-    h.size(), [&](std::size_t a, double& top) { top = std::max(top, h(a) / n.listed_h[a]); },
-    Kokkos::Max<double>(largest_growth), "sph::measure_neighbour_slack::growth");
-  slack.lists.displacement = std::max(slack.lists.displacement, largest_displacement);
-  slack.lists.growth = std::max(slack.lists.growth, largest_growth);
+  const auto displacement = [&](std::size_t a) {
+    double d2 = 0;
+    bool wrapped = false;
+    for (int k = 0; k < D; ++k) {
+      const double dx = x(a)[k] - n.listed_x[a][k];
+      wrapped = wrapped || (space.periodic[k] && 2 * std::fabs(dx) > space.period(k));
+      d2 += dx * dx;
+    }
+    return wrapped ? infinite : std::sqrt(d2) / n.listed_h[a];
+  };
+  slack.lists.displacement = flecsi_lite::forall_max(h.size(), displacement, slack.lists.displacement,
+                                                     "sph::measure_neighbour_slack::displacement");
+  slack.lists.growth = flecsi_lite::forall_max(
+    h.size(), [&](std::size_t a) { return h(a) / n.listed_h[a]; }, slack.lists.growth,
+    "sph::measure_neighbour_slack::growth");
   return slack;
 }
 
