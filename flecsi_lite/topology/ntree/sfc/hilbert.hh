@@ -13,9 +13,10 @@ namespace flecsi_lite::topology::ntree {
 
 /// Skilling's AxestoTranspose: turns `bits`-bit coordinates into the transposed Hilbert index
 /// (bit j of the index's digit at each level spread over the axes). Bit j of the result depends
-/// only on bits >= j of the input, which makes Hilbert prefixes hierarchical cell keys.
-template<int D>
-constexpr std::array<std::uint64_t, D> hilbert_transpose(std::array<std::uint64_t, D> x, int bits) {
+/// only on bits >= j of the input, which makes Hilbert prefixes hierarchical cell keys. `Word`
+/// may be a vector of 64-bit lanes (compute_keys): the same integer operations on each lane.
+template<int D, class Word = std::uint64_t>
+constexpr std::array<Word, D> hilbert_transpose(std::array<Word, D> x, int bits) {
   assert(bits >= 0 && bits <= 63 / D);
   if (bits == 0) return x;
   // Inverse undo of the excess work: rotate/reflect lower bits by each higher bit. Written
@@ -23,15 +24,15 @@ constexpr std::array<std::uint64_t, D> hilbert_transpose(std::array<std::uint64_
   for (int level = bits - 1; level > 0; --level) {
     const std::uint64_t low = (std::uint64_t{1} << level) - 1;
     for (int i = 0; i < D; ++i) {
-      const std::uint64_t set = 0 - (x[i] >> level & 1);
-      const std::uint64_t exchange = (x[0] ^ x[i]) & low & ~set;
+      const Word set = 0 - (x[i] >> level & 1);
+      const Word exchange = (x[0] ^ x[i]) & low & ~set;
       x[0] ^= (low & set) | exchange;  // invert when the bit is set, else exchange
       x[i] ^= exchange;
     }
   }
   // Gray encode.
   for (int i = 1; i < D; ++i) x[i] ^= x[i - 1];
-  std::uint64_t t = 0;
+  Word t{};
   for (int level = bits - 1; level > 0; --level) t ^= ((std::uint64_t{1} << level) - 1) & (0 - (x[D - 1] >> level & 1));
   for (int i = 0; i < D; ++i) x[i] ^= t;
   return x;

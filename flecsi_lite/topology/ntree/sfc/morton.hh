@@ -8,8 +8,9 @@
 
 namespace flecsi_lite::topology::ntree {
 
-/// Spreads the low 21 bits of `v` so that bit i moves to bit 3i.
-constexpr std::uint64_t spread_bits_3(std::uint64_t v) {
+/// Spreads the low 21 bits of `v` (of each lane, for a vector Word) so that bit i moves to bit 3i.
+template<class Word>
+constexpr Word spread_bits_3(Word v) {
   v &= 0x1fffffull;
   v = (v | v << 32) & 0x1f00000000ffffull;
   v = (v | v << 16) & 0x1f0000ff0000ffull;
@@ -30,8 +31,9 @@ constexpr std::uint64_t compact_bits_3(std::uint64_t v) {
   return v;
 }
 
-/// Spreads the low 32 bits of `v` so that bit i moves to bit 2i.
-constexpr std::uint64_t spread_bits_2(std::uint64_t v) {
+/// Spreads the low 32 bits of `v` (of each lane, for a vector Word) so that bit i moves to bit 2i.
+template<class Word>
+constexpr Word spread_bits_2(Word v) {
   v &= 0xffffffffull;
   v = (v | v << 16) & 0x0000ffff0000ffffull;
   v = (v | v << 8) & 0x00ff00ff00ff00ffull;

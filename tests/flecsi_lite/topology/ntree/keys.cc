@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <set>
 #include <vector>
@@ -212,13 +213,33 @@ TEST_CASE("keys of positions outside the box are clamped to boundary cells", "[n
   REQUIRE(nt::deepest_cell<2>(domain, {1.0, 0.0})[0] == last);
 }
 
-TEST_CASE("keys computed in parallel equal the scalar function", "[ntree][keys]") {
+// compute_keys computes Hilbert keys eight at a time (vector lanes); they must be key_of's bit
+// for bit, also for a last block of fewer particles and for positions outside the box or NaN.
+template<int D>
+void check_parallel_keys(nt::curve order) {
   std::mt19937_64 random(9);
-  std::uniform_real_distribution<double> unit(0, 1);
-  std::vector<nt::point<3>> x(1000);
-  for (auto& p : x) p = {unit(random), unit(random), unit(random)};
-  const nt::box<3> domain{{0, 0, 0}, {1, 1, 1}};
-  std::vector<nt::key_type> keys(x.size());
-  nt::compute_keys<3>(nt::curve::hilbert, domain, x.data(), x.size(), keys.data());
-  for (std::size_t i = 0; i < x.size(); ++i) REQUIRE(keys[i] == nt::key_of<3>(nt::curve::hilbert, domain, x[i]));
+  std::uniform_real_distribution<double> beyond(-0.2, 1.2);
+  std::vector<nt::point<D>> x(1003);
+  for (auto& p : x)
+    for (int k = 0; k < D; ++k) p[k] = beyond(random);
+  x[5][0] = std::numeric_limits<double>::quiet_NaN();
+  x[1002][D - 1] = 1.0;
+  nt::box<D> domain;
+  for (int k = 0; k < D; ++k) {
+    domain.lo[k] = 0;
+    domain.hi[k] = 1;
+  }
+  for (const std::size_t n : {std::size_t(1003), std::size_t(8), std::size_t(3), std::size_t(0)}) {
+    std::vector<nt::key_type> keys(n);
+    nt::compute_keys<D>(order, domain, x.data(), n, keys.data());
+    for (std::size_t i = 0; i < n; ++i) REQUIRE(keys[i] == nt::key_of<D>(order, domain, x[i]));
+  }
+}
+
+TEST_CASE("keys computed in parallel equal the scalar function", "[ntree][keys]") {
+  for (const nt::curve order : {nt::curve::hilbert, nt::curve::morton}) {
+    check_parallel_keys<1>(order);
+    check_parallel_keys<2>(order);
+    check_parallel_keys<3>(order);
+  }
 }
