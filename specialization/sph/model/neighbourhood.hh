@@ -46,7 +46,8 @@ struct neighbourhood {
   std::vector<double> listed_h;     ///< its h then (with a skin)
   /// The owned targets whose lists hold owned particles only (a periodic image of an owned
   /// particle is owned data), and the others, whose lists hold a ghost; each ascending, together
-  /// every target once. Filled with the lists (split_targets).
+  /// every target of the search once (every owned particle, or the active ones of
+  /// search_active_neighbours). Filled with the lists (split_targets).
   std::vector<std::uint32_t> interior, boundary;
   /// With individual time steps, the active targets of each set (time_bins.hh, select_active):
   /// the pair tasks then sum for those only. A search selects every target again.
@@ -177,29 +178,40 @@ void release_spare_room(std::vector<T>& v) {
   if (v.capacity() > v.size() + v.size() / 4) v.shrink_to_fit();
 }
 
-/// Splits the targets of `n` into interior and boundary: a target is interior when every entry
-/// of its list is an owned particle (storage index below the number of targets, the owned count).
-/// `particles` counts the owned and ghost particles the lists may name: without ghosts (one
-/// rank) every target is interior, and the lists are not scanned.
+/// Splits the targets of `n` (the owned particles a with chosen[a] != 0; all without `chosen`)
+/// into interior and boundary: a target is interior when every entry of its list is an owned
+/// particle (storage index below the owned count). `particles` counts the owned and ghost
+/// particles the lists may name: without ghosts (one rank) every target is interior, and the
+/// lists are not scanned. A search of the active particles (individual time steps) splits those
+/// only: the other rows are empty, and a pass over all of them cost as much as the split.
 template<int D>
-void split_targets(neighbourhood<D>& n, std::size_t particles) {
+void split_targets(neighbourhood<D>& n, std::size_t particles, const std::uint8_t* chosen = nullptr) {
   const std::size_t owned = n.size();
-  std::vector<std::uint8_t> needs_ghosts(particles > owned ? owned : 0);
-  const neighbour_walk<D> walk(n);
-  flecsi_lite::forall(
-    needs_ghosts.size(),
-    [&](std::size_t a) {
-      const neighbour_row<D> row = walk.row(a);
-      bool ghost = false;
-      for (std::size_t j = 0; j < row.size() && !ghost; ++j) ghost = row.neighbour(j) >= owned;
-      needs_ghosts[a] = ghost;
-    },
-    "sph::split_targets");
   n.interior.clear();
   n.boundary.clear();
   n.active_selected = false;
+  std::vector<std::uint32_t>& targets = n.interior;  // every target first, ascending
   for (std::size_t a = 0; a < owned; ++a)
-    (!needs_ghosts.empty() && needs_ghosts[a] ? n.boundary : n.interior).push_back(static_cast<std::uint32_t>(a));
+    if (chosen == nullptr || chosen[a] != 0) targets.push_back(static_cast<std::uint32_t>(a));
+  if (particles <= owned) return;
+  std::vector<std::uint8_t> needs_ghosts(targets.size());
+  const neighbour_walk<D> walk(n);
+  flecsi_lite::forall(
+    targets.size(),
+    [&](std::size_t i) {
+      const neighbour_row<D> row = walk.row(targets[i]);
+      bool ghost = false;
+      for (std::size_t j = 0; j < row.size() && !ghost; ++j) ghost = row.neighbour(j) >= owned;
+      needs_ghosts[i] = ghost;
+    },
+    "sph::split_targets");
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < targets.size(); ++i)
+    if (needs_ghosts[i])
+      n.boundary.push_back(targets[i]);
+    else
+      targets[kept++] = targets[i];
+  targets.resize(kept);
 }
 
 /// The groups of the searches' walk (seed Algorithm 2): 64 targets share one interaction list.
@@ -215,7 +227,7 @@ namespace detail {
 /// positions and h searched with, the interior and boundary targets.
 template<int D>
 void finish_search(const tree::local_tree<D>& local, neighbourhood<D>& out, double support, double list_reach,
-                   const tree::domain<D>& space) {
+                   const tree::domain<D>& space, const std::uint8_t* chosen = nullptr) {
   release_spare_room(out.lists.neighbours);
   release_spare_room(out.lists.runs);
   const auto table = space.shift_table();
@@ -224,7 +236,7 @@ void finish_search(const tree::local_tree<D>& local, neighbourhood<D>& out, doub
   out.reach = support;
   out.list_reach = list_reach;
   const std::size_t owned = local.owned_size();
-  split_targets(out, local.size());
+  split_targets(out, local.size(), chosen);
   if (!(list_reach > support)) {
     // Without a skin a list never outlives a step (list_reuse.hh: any motion, and h not
     // shrinking, uses up a skin of 0): no positions and h to keep, 32 bytes a particle in 3D.
@@ -271,7 +283,7 @@ void search_active_neighbours(
   flecsi_lite::forall(
     active.size(), [&](std::size_t a) { active[a] = step_end(a) == next; }, "sph::search_active_neighbours::mask");
   local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, {}, storage);
-  detail::finish_search(*local, *out, support, support, space);
+  detail::finish_search(*local, *out, support, support, space, active.data());
 }
 
 /// Launches the search of `out` on the tree of `p` (after ntree::distribute() or
