@@ -4,6 +4,7 @@
 #include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 
 namespace flecsi_lite::topology::ntree {
@@ -24,6 +25,8 @@ void hashed_tree<D>::build(const key_type* keys, const point<D>* x, const double
   for (std::size_t i = 0; i < n; ++i) assert(level<D>(keys[i]) == max_level<D>);
   for (std::size_t i = 1; i < n; ++i) assert(keys[i - 1] <= keys[i]);
 #endif
+  static std::atomic<std::uint64_t> builds{0};
+  build_id_ = ++builds;
   options_ = options;
   nodes_.clear();
   level_begin_.assign(1, 0);
@@ -43,23 +46,49 @@ void hashed_tree<D>::build(const key_type* keys, const point<D>* x, const double
 }
 
 template<int D>
+template<class Update>
+void hashed_tree<D>::for_each_node_bottom_up(const Update& update) {
+  // Levels of few nodes are done in place: a parallel loop costs a fork and a join, which on
+  // a loaded machine can wait for a thread that is not running.
+  constexpr std::size_t parallel_level_size = 1024;
+  for (int l = depth(); l >= 0; --l) {
+    if (level_size(l) < parallel_level_size) {
+      for (std::uint32_t i = level_begin_[l]; i < level_begin_[l + 1]; ++i) update(i);
+    } else {
+      flecsi_lite::forall(
+        level_size(l), [&update, this, l](std::size_t i) { update(level_begin_[l] + i); }, "ntree::hashed_tree::refit");
+    }
+  }
+}
+
+template<int D>
 void hashed_tree<D>::refit(const point<D>* x, const double* m, const double* h) {
   x_ = x;
   m_ = m;
   h_ = h;
   quadrupoles_.assign(options_.quadrupole ? nodes_.size() : 0, quadrupole<D>::Zero());
   search_nodes_.resize(nodes_.size());
-  // Levels of few nodes are done in place: a parallel loop costs a fork and a join, which on
-  // a loaded machine can wait for a thread that is not running.
-  constexpr std::size_t parallel_level_size = 1024;
-  for (int l = depth(); l >= 0; --l) {
-    if (level_size(l) < parallel_level_size) {
-      for (std::uint32_t i = level_begin_[l]; i < level_begin_[l + 1]; ++i) compute_node(i);
+  for_each_node_bottom_up([this](std::size_t i) { compute_node(i); });
+}
+
+template<int D>
+void hashed_tree<D>::refit_moved(const point<D>* x, const double* m, const double* h, const std::uint8_t* moved) {
+  x_ = x;
+  m_ = m;
+  h_ = h;
+  node_moved_.resize(nodes_.size());
+  std::uint8_t* node_moved = node_moved_.data();
+  for_each_node_bottom_up([this, moved, node_moved](std::size_t i) {
+    const tree_node<D>& node = nodes_[i];
+    std::uint8_t any = 0;
+    if (node.is_leaf()) {
+      for (std::uint32_t b = node.begin; b < node.end; ++b) any |= moved[b];
     } else {
-      flecsi_lite::forall(
-        level_size(l), [this, l](std::size_t i) { compute_node(level_begin_[l] + i); }, "ntree::hashed_tree::refit");
+      for (std::uint32_t c = node.first_child; c < node.first_child + node.child_count; ++c) any |= node_moved[c];
     }
-  }
+    node_moved[i] = any;
+    if (any) compute_node(i);
+  });
 }
 
 template<int D>

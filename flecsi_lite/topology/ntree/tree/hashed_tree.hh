@@ -76,6 +76,16 @@ class hashed_tree {
   /// particle data, keeping the structure: valid for the same particles in the same order.
   void refit(const point<D>* x, const double* m, const double* h);
 
+  /// The same when only the particles with moved[b] != 0 (b in the sorted order) may have a new
+  /// x, m or h since the last build or refit: only the nodes that hold one are recomputed. Each
+  /// node is a function of its particles' values, so the nodes are bitwise refit's, at a cost
+  /// that follows the moved particles (with individual time steps a blast moves a few percent).
+  void refit_moved(const point<D>* x, const double* m, const double* h, const std::uint8_t* moved);
+
+  /// Names the last build among every build of every tree of the process (from 1): structure
+  /// that depends on nodes' ranges only stays valid while it is unchanged (group_walk's groups).
+  std::uint64_t build_id() const { return build_id_; }
+
   /// Number of particles.
   std::size_t size() const { return nodes_.empty() ? 0 : nodes_[0].end; }
   const std::vector<tree_node<D>>& nodes() const { return nodes_; }
@@ -106,7 +116,7 @@ class hashed_tree {
 
   /// Memory held by the tree (nodes, hash table, quadrupoles, level index).
   std::size_t bytes() const {
-    return nodes_.size() * (sizeof(tree_node<D>) + sizeof(search_node<D>)) + table_.bytes() +
+    return nodes_.size() * (sizeof(tree_node<D>) + sizeof(search_node<D>)) + node_moved_.capacity() + table_.bytes() +
            quadrupoles_.size() * sizeof(quadrupole<D>) + level_begin_.size() * sizeof(std::uint32_t);
   }
 
@@ -117,6 +127,9 @@ class hashed_tree {
   std::size_t split_level(const key_type* keys, std::size_t first, std::size_t last, const split_rule& split);
   // Bottom-up quantities of one node; its children are already done.
   void compute_node(std::size_t index);
+  // Calls update(i) for every node, deepest level first (a level in parallel).
+  template<class Update>
+  void for_each_node_bottom_up(const Update& update);
 
   tree_options options_;
   std::vector<tree_node<D>> nodes_;
@@ -127,6 +140,8 @@ class hashed_tree {
   const point<D>* x_ = nullptr;
   const double* m_ = nullptr;
   const double* h_ = nullptr;
+  std::uint64_t build_id_ = 0;
+  std::vector<std::uint8_t> node_moved_;  // refit_moved: whether a node holds a moved particle
   // Build scratch, kept to avoid reallocation on rebuilds.
   std::vector<std::uint32_t> child_begin_;
   std::vector<std::uint32_t> child_offset_;

@@ -12,8 +12,10 @@
 #include "flecsi_lite/topology/ntree/sfc/ordering.hh"
 #include "flecsi_lite/topology/ntree/tree/hashed_tree.hh"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -51,14 +53,18 @@ class local_tree {
       if (storage_to_sorted_[a - 1] > storage_to_sorted_[a])
         throw std::logic_error("ntree::local_tree: the owned particles are not in (key, id) order");
     gather(x, m, h);
+    moved_.assign(total, 0);
     tree_.build(keys_.data(), x_.data(), m_.data(), h_.data(), total, options);
   }
 
   /// Takes new positions, masses and smoothing lengths of the same particles (storage arrays,
-  /// ghosts updated) and recomputes the node boxes and moments; the structure is kept.
+  /// ghosts updated) and recomputes the node boxes and moments; the structure is kept. Only the
+  /// nodes holding a particle whose values changed (bit for bit) are recomputed: the nodes are
+  /// those of a whole refit, at the cost of a comparison for the particles that did not move.
   void refresh(const point<D>* x, const double* m, const double* h) {
-    gather(x, m, h);
-    tree_.refit(x_.data(), m_.data(), h_.data());
+    take_moved(x, m, h);
+    tree_.refit_moved(x_.data(), m_.data(), h_.data(), moved_.data());
+    std::fill(moved_.begin(), moved_.end(), 0);
   }
 
   /// Takes the new smoothing lengths of the chosen particles only (storage_chosen[a] != 0, one
@@ -75,10 +81,13 @@ class local_tree {
     const std::size_t* from = sorted_to_storage_.data();
     const std::uint8_t* chosen = storage_chosen.data();
     double* sorted_h = h_.data();
+    std::uint8_t* moved = moved_.data();
     flecsi_lite::forall(
       size(),
       [=](std::size_t s) {
-        if (chosen[from[s]]) sorted_h[s] = h[from[s]];
+        if (!chosen[from[s]]) return;
+        sorted_h[s] = h[from[s]];
+        moved[s] = 1;  // its nodes' largest h are refitted at the next refresh
       },
       "ntree::local_tree::take_smoothing_lengths_of");
   }
@@ -92,7 +101,7 @@ class local_tree {
   const std::vector<std::uint8_t>& owned_mask() const { return owned_mask_; }
   /// Memory held: the sorted copies, the index maps, the tree and the search workspaces.
   std::size_t bytes() const {
-    const std::size_t per_particle = 2 * sizeof(std::size_t) + sizeof(std::uint8_t) + sizeof(key_type) +
+    const std::size_t per_particle = 2 * sizeof(std::size_t) + 2 * sizeof(std::uint8_t) + sizeof(key_type) +
                                      sizeof(std::uint64_t) + sizeof(point<D>) + 2 * sizeof(double);
     return sorted_to_storage_.capacity() * per_particle + tree_.bytes() + walk_.bytes() + target_mask_.capacity() +
            selected_walk_.bytes() + source_walk_.bytes();
@@ -173,6 +182,30 @@ class local_tree {
       "ntree::local_tree::gather");
   }
 
+  // gather for the same particles, marking in moved_ (which take_smoothing_lengths_of may have
+  // marked already) those whose x, m or h differ in any bit from the sorted copies.
+  void take_moved(const point<D>* x, const double* m, const double* h) {
+    if (moved_.size() != size()) throw std::logic_error("ntree::local_tree: refresh of a tree that was not built");
+    const std::size_t* from = sorted_to_storage_.data();
+    point<D>* sorted_x = x_.data();
+    double *sorted_m = m_.data(), *sorted_h = h_.data();
+    std::uint8_t* moved = moved_.data();
+    const auto differs = [](double a, double b) { return std::memcmp(&a, &b, sizeof(double)) != 0; };
+    flecsi_lite::forall(
+      size(),
+      [=](std::size_t s) {
+        const std::size_t a = from[s];
+        bool changed = moved[s] != 0 || differs(m[a], sorted_m[s]) || differs(h[a], sorted_h[s]);
+        for (int k = 0; k < D; ++k) changed = changed || differs(x[a][k], sorted_x[s][k]);
+        if (!changed) return;
+        sorted_x[s] = x[a];
+        sorted_m[s] = m[a];
+        sorted_h[s] = h[a];
+        moved[s] = 1;
+      },
+      "ntree::local_tree::take_moved");
+  }
+
   // target_mask_ in sorted order from a mask over the first `count` storage indices.
   void mark_targets(const std::vector<std::uint8_t>& storage_targets, std::size_t count) {
     if (storage_targets.size() < count)
@@ -217,6 +250,8 @@ class local_tree {
   std::size_t owned_ = 0;
   std::vector<std::size_t> sorted_to_storage_, storage_to_sorted_;
   std::vector<std::uint8_t> owned_mask_;
+  // Sorted particles whose values changed since the nodes were last computed (refresh).
+  std::vector<std::uint8_t> moved_;
   std::vector<key_type> keys_;
   std::vector<std::uint64_t> ids_;
   std::vector<point<D>> x_;

@@ -139,6 +139,36 @@ TEST_CASE("a search from targets whose h changed after the build is exact for th
   }
 }
 
+// A walk keeps its groups while its tree keeps its structure (hashed_tree::build_id): after a
+// refit of moved particles it must still equal the brute force, and after a new build of the
+// same tree object (other particles, other nodes) find new groups.
+TEST_CASE("a walk kept over refits and rebuilds of its tree equals brute force", "[ntree][group_walk]") {
+  const auto space = nt::domain<3>::open();
+  auto set = uniform<3>(3000, 61);
+  sort_by_key(set, nt::curve::hilbert);
+  auto tree = build_tree(set, 8);
+  const nt::search_options options{nt::interaction::symmetric, 2.0, nullptr};
+  const nt::group_options grouping{32, 0, 0};
+  nt::group_walk<3> walk(options, grouping);
+  const auto search_equals_brute_force = [&]() {
+    nt::neighbour_lists found;
+    walk.find_neighbours(tree, space, found);
+    require_equal(found, brute_force(set, space, options));
+    check_groups_partition(walk, tree, grouping);
+  };
+  search_equals_brute_force();
+  std::mt19937_64 random(62);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  for (auto& x : set.x)
+    for (auto& component : x) component += jitter(random);
+  tree.refit(set.x.data(), set.m.data(), set.h.data());
+  search_equals_brute_force();
+  set = gaussian_blobs<3>(2000, 2, 0.05, 63);
+  sort_by_key(set, nt::curve::hilbert);
+  tree.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), set.size(), {8, false});
+  search_equals_brute_force();
+}
+
 TEST_CASE("sums in canonical order are reproducible across thread schedules", "[ntree][group_walk]") {
   auto set = uniform<3>(3000, 77, 60);
   sort_by_key(set, nt::curve::hilbert);

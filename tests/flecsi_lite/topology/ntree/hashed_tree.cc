@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -181,6 +182,60 @@ TEST_CASE("refit follows moved particles with the same structure", "[ntree][tree
   tree.refit(set.x.data(), set.m.data(), set.h.data());
   REQUIRE(tree.nodes().size() == node_count);
   check_moments(tree, set);
+}
+
+// With individual time steps the local tree's refresh recomputes only the nodes holding a
+// particle that changed (hashed_tree::refit_moved; local_tree::refresh finds them): the nodes
+// must be bit for bit those of a whole refit, or the searches (and the outputs) would change.
+TEST_CASE("a refit of the moved particles' nodes equals a whole refit bit for bit", "[ntree][tree]") {
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; };
+  const auto same_points = [&](const nt::point<3>& a, const nt::point<3>& b) {
+    return same(a[0], b[0]) && same(a[1], b[1]) && same(a[2], b[2]);
+  };
+  for (const bool quadrupole : {false, true}) {
+    auto set = ntree_test::gaussian_blobs<3>(4000, 3, 0.05, 15);
+    ntree_test::sort_by_key(set, nt::curve::hilbert);
+    nt::hashed_tree<3> whole, partial;  // both read the set's arrays
+    whole.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), set.size(), {16, quadrupole});
+    partial.build(set.keys.data(), set.x.data(), set.m.data(), set.h.data(), set.size(), {16, quadrupole});
+    std::mt19937_64 random(16);
+    std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+    // Rounds that move a twentieth of the particles (x, m or h alone), none, or all of them.
+    for (const std::size_t every : {20, 20, 1000000, 1}) {
+      std::vector<std::uint8_t> moved(set.size(), 0);
+      for (std::size_t b = 0; b < set.size(); ++b) {
+        if (random() % every != 0) continue;
+        moved[b] = 1;
+        switch (random() % 3) {
+          case 0:
+            set.x[b][random() % 3] += jitter(random);
+            break;
+          case 1:
+            set.m[b] *= 1.5;
+            break;
+          default:
+            set.h[b] *= 1 + jitter(random);
+            break;
+        }
+      }
+      whole.refit(set.x.data(), set.m.data(), set.h.data());
+      partial.refit_moved(set.x.data(), set.m.data(), set.h.data(), moved.data());
+      for (std::uint32_t i = 0; i < whole.nodes().size(); ++i) {
+        const auto &a = whole.node(i), &b = partial.node(i);
+        REQUIRE(same_points(a.bounds.lo, b.bounds.lo));
+        REQUIRE(same_points(a.bounds.hi, b.bounds.hi));
+        REQUIRE(same_points(a.centre, b.centre));
+        REQUIRE(same(a.h_max, b.h_max));
+        REQUIRE(same(a.mass, b.mass));
+        const auto &c = whole.search_nodes()[i], &d = partial.search_nodes()[i];
+        REQUIRE(std::memcmp(c.lo.data(), d.lo.data(), sizeof(c.lo)) == 0);
+        REQUIRE(std::memcmp(c.hi.data(), d.hi.data(), sizeof(c.hi)) == 0);
+        REQUIRE(std::memcmp(&c.h_max, &d.h_max, sizeof(c.h_max)) == 0);
+        if (quadrupole) REQUIRE(whole.node_quadrupole(i) == partial.node_quadrupole(i));
+      }
+      check_moments(partial, set);
+    }
+  }
 }
 
 TEST_CASE("tree memory is a few tens of bytes per particle", "[ntree][tree]") {
