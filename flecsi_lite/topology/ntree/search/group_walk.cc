@@ -3,6 +3,8 @@
 // generated once, not in each translation unit. (The walks that take a caller's functor stay in the header.)
 #include "flecsi_lite/topology/ntree/search/group_walk.hh"
 
+#include <cstring>
+
 namespace flecsi_lite::topology::ntree {
 
 template<int D>
@@ -46,6 +48,27 @@ void group_walk<D>::find_groups(const hashed_tree<D>& tree) {
       continue;
     }
     for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) stack.push_back(c);
+  }
+}
+
+template<int D>
+void group_walk<D>::find_groups_with_targets(const hashed_tree<D>& tree) {
+  walked_.clear();
+  const std::uint8_t* targets = search_.targets;
+  // Whether bytes [begin, end) of the mask hold a nonzero one, eight at a time.
+  const auto holds_target = [targets](std::size_t begin, std::size_t end) {
+    std::uint64_t any = 0;
+    for (; begin + 8 <= end; begin += 8) {
+      std::uint64_t word;
+      std::memcpy(&word, targets + begin, sizeof(word));
+      any |= word;
+    }
+    for (; begin < end; ++begin) any |= targets[begin];
+    return any != 0;
+  };
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    const tree_node<D>& node = tree.node(groups_[g]);
+    if (holds_target(node.begin, node.end)) walked_.push_back(static_cast<std::uint32_t>(g));
   }
 }
 

@@ -81,7 +81,7 @@ class group_walk {
 
   /// Memory held between walks: the groups and the per-thread workspaces.
   std::size_t bytes() const {
-    std::size_t total = (groups_.capacity() + group_stack_.capacity()) * sizeof(std::uint32_t);
+    std::size_t total = (groups_.capacity() + group_stack_.capacity() + walked_.capacity()) * sizeof(std::uint32_t);
     for (const workspace& work : workspaces_) total += work.bytes();
     return total;
   }
@@ -134,7 +134,11 @@ class group_walk {
       find_groups(tree);
       groups_build_ = by_size_only ? tree.build_id() : 0;
     }
-    const std::size_t group_count = groups_.size();
+    // With chosen targets only the groups holding one are walked (individual time steps: a
+    // few percent of the particles are targets, and most groups hold none).
+    const bool chosen = search_.targets != nullptr;
+    if (chosen) find_groups_with_targets(tree);
+    const std::size_t group_count = chosen ? walked_.size() : groups_.size();
     const std::size_t chunks = chunk_count_for(group_count);
     if (workspaces_.size() < chunks) workspaces_.resize(chunks);
     for (workspace& work : workspaces_) work.entries = 0;
@@ -146,7 +150,7 @@ class group_walk {
         [&](std::size_t c) {
           workspace& work = workspaces_[c];
           for (std::size_t g = group_count * c / chunks; g < group_count * (c + 1) / chunks; ++g) {
-            work.group = g;
+            work.group = chosen ? walked_[g] : g;
             body(c, work, kind, periodic);
           }
         },
@@ -156,6 +160,8 @@ class group_walk {
 
   // Step 1 (FIND_NODES): the groups, by a depth-first descent in key order.
   void find_groups(const hashed_tree<D>& tree);
+  // walked_: the indices in groups_ of the groups that hold a target (search_.targets).
+  void find_groups_with_targets(const hashed_tree<D>& tree);
 
   // Steps 2 and 3 (INTERACTION_LIST, APPLY_SUB_TREE) for the group work.group: calls
   // emit(a, count, neighbour, shift) once for every target a of the group, whose neighbours
@@ -268,6 +274,7 @@ class group_walk {
   group_options grouping_;
   std::vector<std::uint32_t> groups_;
   std::uint64_t groups_build_ = 0;  // the tree build groups_ belong to (0: none kept)
+  std::vector<std::uint32_t> walked_;
   std::vector<std::uint32_t> group_stack_;
   std::vector<workspace> workspaces_;
   neighbour_list_builder builder_;
