@@ -334,14 +334,16 @@ double wake_bins(timeline clock, int levels, ro<particle_kind> kind, ro<std::int
 /// (exact below 2^53).
 template<int D>
 double earliest_step_end(ro<particle_kind> kind, ro<std::int64_t> step_end) {
-  double earliest = 0;
+  // A minimum of integers without a branch (the loop vectorises: it reads every particle each
+  // system step), converted once; a wall's end counts as the span.
+  std::int64_t earliest = timeline::span;
   flecsi_lite::forall_reduce(
     step_end.size(),
-    [&](std::size_t a, double& e) {
-      if (kind(a) == particle_kind::fluid) e = std::min(e, static_cast<double>(step_end(a)));
+    [&](std::size_t a, std::int64_t& e) {
+      e = std::min(e, kind(a) == particle_kind::fluid ? step_end(a) : timeline::span);
     },
-    Kokkos::Min<double>(earliest), "sph::earliest_step_end");
-  return std::min(earliest, static_cast<double>(timeline::span));  // the reduction's identity is huge
+    Kokkos::Min<std::int64_t>(earliest), "sph::earliest_step_end");
+  return static_cast<double>(std::min(earliest, timeline::span));  // the reduction's identity is huge
 }
 
 /// The largest bin max_time_step allows (timeline::bins without a bound).

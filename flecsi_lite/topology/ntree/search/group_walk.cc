@@ -32,6 +32,7 @@ void group_walk<D>::find_neighbours(const hashed_tree<D>& tree, const domain<D>&
 template<int D>
 void group_walk<D>::find_groups(const hashed_tree<D>& tree) {
   groups_.clear();
+  group_bounds_.clear();
   if (tree.size() == 0) return;
   std::vector<std::uint32_t>& stack = group_stack_;
   stack.assign(1, 0);
@@ -66,10 +67,15 @@ void group_walk<D>::find_groups_with_targets(const hashed_tree<D>& tree) {
     for (; begin < end; ++begin) any |= targets[begin];
     return any != 0;
   };
-  for (std::size_t g = 0; g < groups_.size(); ++g) {
-    const tree_node<D>& node = tree.node(groups_[g]);
-    if (holds_target(node.begin, node.end)) walked_.push_back(static_cast<std::uint32_t>(g));
+  // The groups partition the particles in order: their bounds, kept in one array, are read
+  // as a stream rather than from the nodes.
+  if (group_bounds_.size() != groups_.size() + 1) {
+    group_bounds_.resize(groups_.size() + 1);
+    group_bounds_[0] = 0;
+    for (std::size_t g = 0; g < groups_.size(); ++g) group_bounds_[g + 1] = tree.node(groups_[g]).end;
   }
+  for (std::size_t g = 0; g < groups_.size(); ++g)
+    if (holds_target(group_bounds_[g], group_bounds_[g + 1])) walked_.push_back(static_cast<std::uint32_t>(g));
 }
 
 template class group_walk<1>;

@@ -81,7 +81,8 @@ class group_walk {
 
   /// Memory held between walks: the groups and the per-thread workspaces.
   std::size_t bytes() const {
-    std::size_t total = (groups_.capacity() + group_stack_.capacity() + walked_.capacity()) * sizeof(std::uint32_t);
+    std::size_t total = (groups_.capacity() + group_stack_.capacity() + walked_.capacity() + group_bounds_.capacity()) *
+                        sizeof(std::uint32_t);
     for (const workspace& work : workspaces_) total += work.bytes();
     return total;
   }
@@ -275,6 +276,7 @@ class group_walk {
   std::vector<std::uint32_t> groups_;
   std::uint64_t groups_build_ = 0;  // the tree build groups_ belong to (0: none kept)
   std::vector<std::uint32_t> walked_;
+  std::vector<std::uint32_t> group_bounds_;  // group g holds particles [bounds[g], bounds[g + 1])
   std::vector<std::uint32_t> group_stack_;
   std::vector<workspace> workspaces_;
   neighbour_list_builder builder_;
