@@ -53,6 +53,7 @@ struct neighbourhood {
   /// the pair tasks then sum for those only. A search selects every target again.
   std::vector<std::uint32_t> active_interior, active_boundary;
   bool active_selected = false;
+  std::int64_t active_tick = -1;  ///< the tick whose step ends the active targets were chosen for
 
   std::size_t size() const { return lists.size(); }
   /// The targets of a pair task's launch, chosen by its ghost privilege: without ghost access

@@ -76,6 +76,7 @@ active_count select_active(typename tracked_neighbourhood<D>::template accessor<
   pick(n.interior, n.active_interior);
   pick(n.boundary, n.active_boundary);
   n.active_selected = true;
+  n.active_tick = next;
   count.targets = static_cast<double>(n.active_interior.size() + n.active_boundary.size());
   return count;
 }
@@ -181,6 +182,24 @@ double assign_bins(timeline clock, int largest, bool first, ro<particle_kind> ki
 }
 
 namespace detail {
+/// Calls visit(a) in parallel for every owned particle a whose step ends at tick `now` (visit
+/// tests it again, and may be called for others): over the active targets select_active chose
+/// for `now` when it has (every fluid particle whose step ends then is one: the system step
+/// searched exactly those), else over every owned particle. The bins' passes then cost what the
+/// active particles need, not a test of every particle's step end.
+template<int D, class Visit>
+void for_each_ending_at(const neighbourhood<D>& n, std::int64_t now, std::size_t owned, const Visit& visit,
+                        const char* name) {
+  if (!n.active_selected || n.active_tick != now) {
+    flecsi_lite::forall(owned, visit, name);
+    return;
+  }
+  const std::vector<std::uint32_t>&interior = n.active_interior, &boundary = n.active_boundary;
+  flecsi_lite::forall(
+    interior.size() + boundary.size(),
+    [&](std::size_t i) { visit(i < interior.size() ? interior[i] : boundary[i - interior.size()]); }, name);
+}
+
 /// Whether entry j of a's list is within the kernel support of either, |r_ab| < 2 max(h_a, h_b):
 /// the pairs of the force sums, which the limiter looks at.
 template<int D, class Positions, class Lengths>
@@ -200,8 +219,8 @@ void find_neighbour_bins(neighbours_ro<D> neighbours, std::int64_t now, ro_with_
                          ro_with_ghosts<double> h, ro_with_ghosts<std::int32_t> time_bin, ro<std::int64_t> step_end,
                          rw<std::int32_t> neighbour_bin) {
   const neighbour_walk<D> walk(*neighbours);
-  flecsi_lite::forall(
-    neighbours->size(),
+  detail::for_each_ending_at(
+    *neighbours, now, neighbours->size(),
     [&](std::size_t a) {
       if (step_end(a) != now) return;
       std::int32_t smallest = time_bin(a);
@@ -220,10 +239,11 @@ void find_neighbour_bins(neighbours_ro<D> neighbours, std::int64_t now, ro_with_
 /// The limiter on the active particles (`levels` = log2 of time_step_limiter; negative: off):
 /// at most the smallest neighbour bin + levels; then each starts its next step.
 template<int D>
-void limit_active_bins(std::int64_t now, int levels, ro<particle_kind> kind, ro<std::int32_t> neighbour_bin,
-                       rw<std::int32_t> time_bin, rw<std::int64_t> step_begin, rw<std::int64_t> step_end) {
-  flecsi_lite::forall(
-    time_bin.size(),
+void limit_active_bins(neighbours_ro<D> neighbours, std::int64_t now, int levels, ro<particle_kind> kind,
+                       ro<std::int32_t> neighbour_bin, rw<std::int32_t> time_bin, rw<std::int64_t> step_begin,
+                       rw<std::int64_t> step_end) {
+  detail::for_each_ending_at(
+    *neighbours, now, time_bin.size(),
     [&](std::size_t a) {
       if (kind(a) != particle_kind::fluid || step_end(a) != now) return;
       if (levels >= 0) time_bin(a) = std::min(time_bin(a), neighbour_bin(a) + levels);  // aligned: smaller than one
@@ -262,8 +282,10 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
     },
     "sph::find_waking_bins::start");
   const neighbour_walk<D> walk(*neighbours);
-  flecsi_lite::forall(
-    owned,
+  // The sources started their step now: the fluid particles whose step ended now
+  // (limit_active_bins), among the targets of this step's search.
+  detail::for_each_ending_at(
+    *neighbours, now, owned,
     [&](std::size_t a) {
       if (step_begin(a) != now) return;
       const std::int32_t bin = time_bin(a);
@@ -448,8 +470,8 @@ void choose_time_bins(simulation<D>& s, bool advance) {
   if (levels >= 0)
     flecsi_lite::execute<find_neighbour_bins<D>>(s.neighbours, s.clock.now, f::position()(p), f::smoothing_length()(p),
                                                  f::time_bin(p), f::step_end(p), f::neighbour_bin(p));
-  flecsi_lite::execute<limit_active_bins<D>>(s.clock.now, levels, f::kind(p), f::neighbour_bin(p), f::time_bin(p),
-                                             f::step_begin(p), f::step_end(p));
+  flecsi_lite::execute<limit_active_bins<D>>(s.neighbours, s.clock.now, levels, f::kind(p), f::neighbour_bin(p),
+                                             f::time_bin(p), f::step_begin(p), f::step_end(p));
   if (levels >= 0) {
     flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now, levels,
                                               f::position()(p), f::smoothing_length()(p), f::step_begin(p),
