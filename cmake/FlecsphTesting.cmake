@@ -17,6 +17,17 @@ endif()
 # The same flags as one string, for tests run through a shell.
 string(REPLACE ";" " " FLECSPH_MPIEXEC_FLAGS_STRING "${FLECSPH_MPIEXEC_FLAGS}")
 
+# With Open MPI 4 every test's mpiexec runs its job with a session directory of its own
+# (tests/support/mpiexec_own_session.sh.in says why): MPIEXEC_EXECUTABLE, from here on, is that
+# wrapper (the cache keeps the real one).
+if(_flecsph_mpiexec_version MATCHES "(Open MPI|OpenRTE)\\) 4\\.")
+  set(FLECSPH_REAL_MPIEXEC ${MPIEXEC_EXECUTABLE})
+  configure_file(${PROJECT_SOURCE_DIR}/tests/support/mpiexec_own_session.sh.in ${PROJECT_BINARY_DIR}/tests/mpiexec
+                 FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ
+                                  WORLD_EXECUTE @ONLY)
+  set(MPIEXEC_EXECUTABLE ${PROJECT_BINARY_DIR}/tests/mpiexec)
+endif()
+
 # Quiet, reproducible test environment: no thread binding warnings from Kokkos, no
 # shared-memory single-copy errors from Open MPI inside containers.
 # CTest runs two tests at once on CI's two cores and unit tests run two threads: OpenMP threads
