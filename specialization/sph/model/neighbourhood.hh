@@ -52,14 +52,15 @@ struct neighbourhood {
   /// With individual time steps, the active targets of each set (time_bins.hh, select_active):
   /// the pair tasks then sum for those only. A search selects every target again.
   std::vector<std::uint32_t> active_interior, active_boundary;
-  bool active_selected = false;
-  std::int64_t active_tick = -1;  ///< the tick whose step ends the active targets were chosen for
+  /// The tick whose step ends select_active chose the active targets for; -1: none chosen.
+  std::int64_t active_tick = -1;
 
   std::size_t size() const { return lists.size(); }
+  bool active_selected() const { return active_tick >= 0; }
   /// The targets of a pair task's launch, chosen by its ghost privilege: without ghost access
   /// (na) the interior ones, with it the boundary ones (the active ones among them when selected).
   const std::vector<std::uint32_t>& targets(flecsi_lite::privilege ghost) const {
-    if (active_selected) return ghost == flecsi_lite::na ? active_interior : active_boundary;
+    if (active_selected()) return ghost == flecsi_lite::na ? active_interior : active_boundary;
     return ghost == flecsi_lite::na ? interior : boundary;
   }
   /// Mean number of list entries per target (itself included).
@@ -190,7 +191,7 @@ void split_targets(neighbourhood<D>& n, std::size_t particles, const std::uint8_
   const std::size_t owned = n.size();
   n.interior.clear();
   n.boundary.clear();
-  n.active_selected = false;
+  n.active_tick = -1;
   std::vector<std::uint32_t>& targets = n.interior;  // every target first, ascending
   for (std::size_t a = 0; a < owned; ++a)
     if (chosen == nullptr || chosen[a] != 0) targets.push_back(static_cast<std::uint32_t>(a));

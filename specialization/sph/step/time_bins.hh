@@ -75,7 +75,6 @@ active_count select_active(typename tracked_neighbourhood<D>::template accessor<
   };
   pick(n.interior, n.active_interior);
   pick(n.boundary, n.active_boundary);
-  n.active_selected = true;
   n.active_tick = next;
   count.targets = static_cast<double>(n.active_interior.size() + n.active_boundary.size());
   return count;
@@ -190,7 +189,7 @@ namespace detail {
 template<int D, class Visit>
 void for_each_ending_at(const neighbourhood<D>& n, std::int64_t now, std::size_t owned, const Visit& visit,
                         const char* name) {
-  if (!n.active_selected || n.active_tick != now) {
+  if (n.active_tick != now) {
     flecsi_lite::forall(owned, visit, name);
     return;
   }

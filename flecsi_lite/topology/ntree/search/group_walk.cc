@@ -32,7 +32,7 @@ void group_walk<D>::find_neighbours(const hashed_tree<D>& tree, const domain<D>&
 template<int D>
 void group_walk<D>::find_groups(const hashed_tree<D>& tree) {
   groups_.clear();
-  group_bounds_.clear();
+  group_bounds_.assign(1, 0);
   if (tree.size() == 0) return;
   std::vector<std::uint32_t>& stack = group_stack_;
   stack.assign(1, 0);
@@ -46,6 +46,7 @@ void group_walk<D>::find_groups(const hashed_tree<D>& tree) {
                          node.bounds.max_extent() <= grouping_.max_group_extent * search_.support * node.h_max;
     if (node.is_leaf() || (small && compact)) {
       groups_.push_back(index);
+      group_bounds_.push_back(node.end);
       continue;
     }
     for (std::uint32_t c = node.first_child + node.child_count; c-- > node.first_child;) stack.push_back(c);
@@ -53,7 +54,7 @@ void group_walk<D>::find_groups(const hashed_tree<D>& tree) {
 }
 
 template<int D>
-void group_walk<D>::find_groups_with_targets(const hashed_tree<D>& tree) {
+void group_walk<D>::find_groups_with_targets() {
   walked_.clear();
   const std::uint8_t* targets = search_.targets;
   // Whether bytes [begin, end) of the mask hold a nonzero one, eight at a time.
@@ -67,13 +68,6 @@ void group_walk<D>::find_groups_with_targets(const hashed_tree<D>& tree) {
     for (; begin < end; ++begin) any |= targets[begin];
     return any != 0;
   };
-  // The groups partition the particles in order: their bounds, kept in one array, are read
-  // as a stream rather than from the nodes.
-  if (group_bounds_.size() != groups_.size() + 1) {
-    group_bounds_.resize(groups_.size() + 1);
-    group_bounds_[0] = 0;
-    for (std::size_t g = 0; g < groups_.size(); ++g) group_bounds_[g + 1] = tree.node(groups_[g]).end;
-  }
   for (std::size_t g = 0; g < groups_.size(); ++g)
     if (holds_target(group_bounds_[g], group_bounds_[g + 1])) walked_.push_back(static_cast<std::uint32_t>(g));
 }

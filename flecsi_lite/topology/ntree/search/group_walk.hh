@@ -138,7 +138,7 @@ class group_walk {
     // With chosen targets only the groups holding one are walked (individual time steps: a
     // few percent of the particles are targets, and most groups hold none).
     const bool chosen = search_.targets != nullptr;
-    if (chosen) find_groups_with_targets(tree);
+    if (chosen) find_groups_with_targets();
     const std::size_t group_count = chosen ? walked_.size() : groups_.size();
     const std::size_t chunks = chunk_count_for(group_count);
     if (workspaces_.size() < chunks) workspaces_.resize(chunks);
@@ -162,7 +162,7 @@ class group_walk {
   // Step 1 (FIND_NODES): the groups, by a depth-first descent in key order.
   void find_groups(const hashed_tree<D>& tree);
   // walked_: the indices in groups_ of the groups that hold a target (search_.targets).
-  void find_groups_with_targets(const hashed_tree<D>& tree);
+  void find_groups_with_targets();
 
   // Steps 2 and 3 (INTERACTION_LIST, APPLY_SUB_TREE) for the group work.group: calls
   // emit(a, count, neighbour, shift) once for every target a of the group, whose neighbours
@@ -276,7 +276,9 @@ class group_walk {
   std::vector<std::uint32_t> groups_;
   std::uint64_t groups_build_ = 0;  // the tree build groups_ belong to (0: none kept)
   std::vector<std::uint32_t> walked_;
-  std::vector<std::uint32_t> group_bounds_;  // group g holds particles [bounds[g], bounds[g + 1])
+  // Group g holds particles [bounds[g], bounds[g + 1]) (the groups partition them in order):
+  // find_groups_with_targets reads them as a stream rather than from the nodes.
+  std::vector<std::uint32_t> group_bounds_;
   std::vector<std::uint32_t> group_stack_;
   std::vector<workspace> workspaces_;
   neighbour_list_builder builder_;

@@ -173,13 +173,8 @@ inline void hilbert_keys(const box<D>& domain, const point<D>* x, std::size_t co
     const auto c = deepest_cell<D>(domain, x[std::min(lane, count - 1)]);  // spare lanes repeat the last
     for (int k = 0; k < D; ++k) cells[k][lane] = c[k];
   }
-  const std::array<key_lanes, D> t = hilbert_transpose<D, key_lanes>(cells, max_level<D>);
-  key_lanes index;
-  if constexpr (D == 2)
-    index = spread_bits_2(t[0]) << 1 | spread_bits_2(t[1]);
-  else
-    index = spread_bits_3(t[0]) << 2 | spread_bits_3(t[1]) << 1 | spread_bits_3(t[2]);
-  index |= key_type{1} << (D * max_level<D>);
+  const key_lanes index =
+    interleave_bits<D>(hilbert_transpose<D, key_lanes>(cells, max_level<D>)) | key_type{1} << (D * max_level<D>);
   for (std::size_t lane = 0; lane < count; ++lane) keys[lane] = index[lane];
 }
 }  // namespace detail

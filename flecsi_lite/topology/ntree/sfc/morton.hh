@@ -54,22 +54,31 @@ constexpr std::uint64_t compact_bits_2(std::uint64_t v) {
   return v;
 }
 
+/// The interleaving of morton_index without its range checks: `Word` may be a vector of 64-bit
+/// lanes (compute_keys), each lane interleaved alone.
+template<int D, class Word>
+constexpr Word interleave_bits(const std::array<Word, D>& cell) {
+  if constexpr (D == 1)
+    return cell[0];
+  else if constexpr (D == 2)
+    return spread_bits_2(cell[0]) << 1 | spread_bits_2(cell[1]);
+  else
+    return spread_bits_3(cell[0]) << 2 | spread_bits_3(cell[1]) << 1 | spread_bits_3(cell[2]);
+}
+
 /// Morton index of a cell: bit j of axis k goes to bit D*j + (D-1-k), so axis 0 is the most
 /// significant bit of every D-bit digit (the convention of Skilling's Hilbert transpose).
 /// @param[in] cell coordinates, each below 2^(63/D).
 template<int D>
 constexpr std::uint64_t morton_index(const std::array<std::uint64_t, D>& cell) {
   static_assert(D >= 1 && D <= 3, "ntree supports 1, 2 and 3 dimensions");
-  if constexpr (D == 1) {
+  if constexpr (D == 1)
     assert(cell[0] < (1ull << 63));
-    return cell[0];
-  } else if constexpr (D == 2) {
+  else if constexpr (D == 2)
     assert(cell[0] < (1ull << 31) && cell[1] < (1ull << 31));
-    return spread_bits_2(cell[0]) << 1 | spread_bits_2(cell[1]);
-  } else {
+  else
     assert(cell[0] < (1ull << 21) && cell[1] < (1ull << 21) && cell[2] < (1ull << 21));
-    return spread_bits_3(cell[0]) << 2 | spread_bits_3(cell[1]) << 1 | spread_bits_3(cell[2]);
-  }
+  return interleave_bits<D>(cell);
 }
 
 /// Inverse of morton_index.
