@@ -98,7 +98,7 @@ short_lane() {
   record glass glass_2d then_check glass "$here/apps/glass/glass_2d.par" --set particles_per_side=64 \
     --set output_file=glass_2d.h5part -- "$python" "$validation/check_glass.py" glass_2d.h5part 0.01 0.05 0.5
   record square square then_check square "$here/apps/square/square.par" --set output_file=square.h5part -- \
-    "$python" "$validation/check_square.py" square.h5part 0.8 0.8 0.9
+    "$python" "$validation/check_square.py" square.h5part 0.7 0.8 0.9
   record kelvin_helmholtz kelvin_helmholtz_128 then_check kelvin_helmholtz \
     "$here/apps/kelvin_helmholtz/kelvin_helmholtz.par" --set particles_per_side=128 --set end_time=1.5 \
     --set output_file=kelvin_helmholtz_128.h5part -- \

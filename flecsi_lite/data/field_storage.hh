@@ -35,6 +35,8 @@ class field_storage_base {
   virtual void pack(const std::size_t* indices, std::size_t count, std::byte* out) const = 0;
   /// Copies `count` elements from `in` to positions first, first+1, ...
   virtual void unpack(const std::byte* in, std::size_t first, std::size_t count) = 0;
+  /// Copies the `count` elements from position `first` into `out` (unpack's inverse).
+  virtual void pack_range(std::size_t first, std::size_t count, std::byte* out) const = 0;
 
  private:
   std::string name_;
@@ -96,6 +98,10 @@ class field_storage final : public field_storage_base {
 
   void unpack(const std::byte* in, std::size_t first, std::size_t count) override {
     if (count) std::memcpy(view_.data() + first, in, count * sizeof(T));
+  }
+
+  void pack_range(std::size_t first, std::size_t count, std::byte* out) const override {
+    if (count) std::memcpy(out, view_.data() + first, count * sizeof(T));
   }
 
  private:

@@ -21,7 +21,10 @@
 namespace flecsi_lite::execution {
 namespace {
 const char* kind_name(launch_kind k) {
-  return k == launch_kind::task ? "task" : k == launch_kind::ghost_copy ? "ghost_copy" : "reduction";
+  return k == launch_kind::task              ? "task"
+         : k == launch_kind::ghost_copy      ? "ghost_copy"
+         : k == launch_kind::ghost_reduction ? "ghost_reduction"
+                                             : "reduction";
 }
 std::string what_of(const std::exception_ptr& error) {
   try {
@@ -204,6 +207,29 @@ launch_ptr executor::record_ghost_copy(const std::vector<const field_access*>& f
     state.regions[1].readers.clear();
     state.ghosts_valid = true;
   }
+  l->sequence = next_sequence_++;
+  queue_.push_back(l);
+  return l;
+}
+
+launch_ptr executor::record_ghost_reduction(const field_access& a, combine_into_owned combine) {
+  if (inside_launch_) throw std::logic_error("executor: reduce_ghosts called from inside a running task");
+  auto l = std::make_shared<launch>();
+  l->name = "ghost reduction " + a.storage->name();
+  l->kind = launch_kind::ghost_reduction;
+  field_state& state = fields_[{a.instance, a.field}];
+  if (!state.ghosts_valid)
+    throw std::logic_error("executor: reduce_ghosts of field '" + a.storage->name() +
+                           "': its ghost values are not defined (no task wrote them since its owned values or its "
+                           "topology's layout changed)");
+  add_dependencies(*l, state, region::ghost, ro);
+  add_dependencies(*l, state, region::owned, rw);
+  const int tag = first_copy_tag + static_cast<int>(ghost_updates_++ % copy_tag_count);
+  l->start = detail::ghost_reduction_start(a.topology, a.storage, std::move(combine), tag, &traffic_);
+  state.regions[1].readers.push_back(l);
+  state.regions[0].last_writer = l;
+  state.regions[0].readers.clear();
+  state.ghosts_valid = false;  // the owners' values changed
   l->sequence = next_sequence_++;
   queue_.push_back(l);
   return l;

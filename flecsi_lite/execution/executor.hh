@@ -18,7 +18,9 @@
 // Ghost values of a field are STALE after a write to its owned region (shared entities may have
 // changed) or a layout change of its topology; they are VALID after a ghost copy or a write to
 // the ghost region. Every rank records the same launches (SPMD), so every rank inserts the same
-// copies; reductions start in program order so their collectives match across ranks.
+// copies; reductions start in program order so their collectives match across ranks. A ghost
+// reduction (reduce_ghosts.hh) sends ghost values back to their owners, combined there: it reads
+// the ghost region and writes the owned one.
 #pragma once
 
 #include "flecsi_lite/data/field_storage.hh"
@@ -29,7 +31,9 @@
 #include "flecsi_lite/execution/trace.hh"
 
 #include <chrono>
+#include <cstddef>
 #include <deque>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -41,6 +45,10 @@ struct ghost_traffic {
   std::uint64_t messages_sent = 0, bytes_sent = 0;
   std::uint64_t messages_received = 0, bytes_received = 0;
 };
+
+/// A ghost reduction's combination of `values` (one element of the field each, as bytes) into
+/// the owned entities `owned` (owned[i] takes values[i]) with the reduction's operation.
+using combine_into_owned = std::function<void(const std::vector<std::size_t>& owned, const std::byte* values)>;
 
 /// One field argument of a launch and its privileges per region; a tracked object is an access
 /// with no topology and no storage (its privilege is the owned one, its ghost privilege na).
@@ -61,6 +69,11 @@ class executor final : public data::layout_listener {
   launch_ptr record(std::string name, launch_kind kind, const std::vector<field_access>& accesses,
                     std::vector<launch_ptr> after, std::function<void(launch&)> start,
                     std::function<void()> finish = {});
+
+  /// Records a ghost reduction of one field (reduce_ghosts.hh): after the launches recorded so
+  /// far that write its ghosts, each ghost value is combined into its owner's value; the
+  /// owners' values change (their ghosts are stale after it).
+  launch_ptr record_ghost_reduction(const field_access& field, combine_into_owned combine);
 
   /// Runs launches until `target` is finished; rethrows its error when it failed.
   void wait(const launch& target);

@@ -1,4 +1,5 @@
-// One recorded unit of work of the executor: a task, a ghost copy or a reduction's collective,
+// One recorded unit of work of the executor: a task, a ghost copy, a ghost reduction (ghost
+// values combined into their owners' values) or a reduction's collective,
 // with the launches it must wait for. Communication launches post non-blocking MPI requests when
 // they start and finish when those complete. A launch that throws FAILS; one that reads the
 // results of a failed launch is CANCELLED (never runs) and fails with a message naming the
@@ -16,7 +17,7 @@
 
 namespace flecsi_lite::execution {
 
-enum class launch_kind { task, ghost_copy, reduction };
+enum class launch_kind { task, ghost_copy, ghost_reduction, reduction };
 enum class launch_state { recorded, in_flight, done, failed };
 
 struct launch {

@@ -1,18 +1,17 @@
 // Internals of the executor: the start of one ghost copy of several fields of a topology, one
-// message per peer (all fields packed together, unpacked per field when the messages arrive).
+// message per peer (all fields packed together, unpacked per field when the messages arrive),
+// and of one ghost reduction (the copy's messages in reverse: each peer's ghost block goes back
+// to its owner, which combines it into the owned values).
 #pragma once
 
 #include "flecsi_lite/data/field_storage.hh"
 #include "flecsi_lite/data/topology_base.hh"
+#include "flecsi_lite/execution/executor.hh"
 #include "flecsi_lite/execution/launch.hh"
 
 #include <functional>
 #include <ostream>
 #include <vector>
-
-namespace flecsi_lite::execution {
-struct ghost_traffic;
-}  // namespace flecsi_lite::execution
 
 namespace flecsi_lite::execution::detail {
 
@@ -21,6 +20,13 @@ namespace flecsi_lite::execution::detail {
 std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
                                               std::vector<data::field_storage_base*> storages, int tag,
                                               ghost_traffic* traffic);
+
+/// The start of a ghost reduction of `storage`: sends each peer the ghost block it fills and
+/// posts the receive of the ghosts it holds of this rank's entities. Sets the launch's finish:
+/// combine, peer by peer in rank order (the periodic images of the rank's own entities in their
+/// place).
+std::function<void(launch&)> ghost_reduction_start(data::topology_base* topology, data::field_storage_base* storage,
+                                                   combine_into_owned combine, int tag, ghost_traffic* traffic);
 
 /// Collective: the ghost traffic per rank (min / mean / max over ranks of messages and bytes
 /// sent), written on rank 0 before the timer table.

@@ -252,32 +252,32 @@ void limit_active_bins(neighbours_ro<D> neighbours, std::int64_t now, int levels
     "sph::limit_active_bins");
 }
 
-/// For each inactive owned particle, the smallest bin among the particles that started a step
-/// at `now` (owned or ghosts: what changed bins) within 2 max(h_a, h_b) of it, as SWIFT's limiter
-/// looks from the active particles at their neighbours: from the owned ones' lists (searched
-/// this step with 2 (1 + search_margin) max(h), enough for the h the density grew), and for the
-/// ghost ones from a walk of the local tree of this step's search (positions unchanged since; the
-/// sources' new h taken in) over them only (on one rank there are no ghosts). Active ones keep
-/// their bound (find_neighbour_bins). A minimum: the same in any order. A source whose bin +
-/// `levels` does not lie below b's own bin cannot wake b (wake_bins: b wakes when its bin exceeds
-/// the smallest source bin + levels, and then takes that value, which a source below it gives),
-/// so it is left out: b's bound may stay higher, but wake_bins decides the same and sets the same
-/// bins (the bound is read nowhere else). Each rank walks from its own ghost sources: no rank
-/// waits for another's decision.
+/// For each inactive particle, the smallest bin among the particles that started a step at `now`
+/// within 2 max(h_a, h_b) of it, as SWIFT's limiter looks from the active particles at their
+/// neighbours: from the sources' lists (searched this step with 2 (1 + search_margin) max(h),
+/// enough for the h the density grew), which hold the owned and the ghost neighbours. A waiting
+/// ghost's bound is its owner's contribution (ghost slots), combined into the owner's bound by
+/// the ghost reduction that follows (reduce_ghosts, a minimum: the same in any order, so on any
+/// rank count). Active ones keep their bound (find_neighbour_bins). A source whose bin + `levels`
+/// does not lie below b's own bin cannot wake b (wake_bins: b wakes when its bin exceeds the
+/// smallest source bin + levels, and then takes that value, which a source below it gives), so
+/// it is left out: b's bound may stay higher, but wake_bins decides the same and sets the same
+/// bins (the bound is read nowhere else).
 template<int D>
-void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::template accessor<flecsi_lite::rw> local,
-                      neighbours_ro<D> neighbours, tree::domain<D> space, std::int64_t now, int levels,
-                      ro_with_ghosts<vector<D>> x, ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
-                      ro_with_ghosts<std::int32_t> time_bin, rw<std::int32_t> neighbour_bin) {
-  const std::size_t owned = neighbour_bin.size(), stored = local->size();
+void find_waking_bins(neighbours_ro<D> neighbours, std::int64_t now, int levels, ro_with_ghosts<vector<D>> x,
+                      ro_with_ghosts<double> h, ro_with_ghosts<std::int64_t> step_begin,
+                      ro_with_ghosts<std::int32_t> time_bin,
+                      accessor<std::int32_t, flecsi_lite::rw, flecsi_lite::wo> neighbour_bin) {
+  const std::size_t owned = neighbour_bin.owned_size();
   std::int32_t* bound = neighbour_bin.data();
-  const auto waits = [&](std::size_t b) { return b < owned && step_begin(b) != now; };
+  const auto waits = [&](std::size_t b) { return step_begin(b) != now; };
   // Whether a source of bin `bin` can wake the waiting particle b (above).
   const auto can_wake = [&](std::size_t b, std::int32_t bin) { return time_bin(b) - levels > bin; };
+  // Every ghost slot starts at the largest bin (a contribution that lowers nothing).
   flecsi_lite::forall(
-    owned,
+    neighbour_bin.size(),
     [&](std::size_t b) {
-      if (waits(b)) bound[b] = wall_bin;
+      if (b >= owned || waits(b)) bound[b] = wall_bin;
     },
     "sph::find_waking_bins::start");
   const neighbour_walk<D> walk(*neighbours);
@@ -300,26 +300,7 @@ void find_waking_bins(typename flecsi_lite::tracked<tree::local_tree<D>>::templa
           Kokkos::atomic_fetch_min(&bound[b], bin);
       }
     },
-    "sph::find_waking_bins::owned");
-  if (stored == owned) return;  // no ghosts (one rank)
-  std::vector<std::uint8_t> sources(stored);
-  std::size_t source_count = 0;
-  flecsi_lite::forall_reduce(
-    stored - owned,
-    [&](std::size_t i, std::size_t& count) {
-      sources[owned + i] = step_begin(owned + i) == now;
-      count += sources[owned + i];
-    },
-    Kokkos::Sum<std::size_t>(source_count), "sph::find_waking_bins::ghosts");
-  if (source_count == 0) return;
-  // The tree is that of this step's search (positions unchanged since); of the particles the walk
-  // acts on, only the sources' h changed (the waiting ones were not active): their h is enough.
-  local->take_smoothing_lengths_of(sources, h.data());
-  local->for_each_neighbour_of(sources, tree::interaction::symmetric, physics::kernel_support, space,
-                               [&](std::size_t a, std::size_t b, const auto&) {
-                                 if (waits(b) && can_wake(b, time_bin(a)))
-                                   Kokkos::atomic_fetch_min(&bound[b], time_bin(a));
-                               });
+    "sph::find_waking_bins");
 }
 
 /// Wakes the inactive particles whose bin exceeds the bound of find_waking_bins + levels: the
@@ -472,9 +453,10 @@ void choose_time_bins(simulation<D>& s, bool advance) {
   flecsi_lite::execute<limit_active_bins<D>>(s.neighbours, s.clock.now, levels, f::kind(p), f::neighbour_bin(p),
                                              f::time_bin(p), f::step_begin(p), f::step_end(p));
   if (levels >= 0) {
-    flecsi_lite::execute<find_waking_bins<D>>(p.local_tree_object(), s.neighbours, p.space(), s.clock.now, levels,
-                                              f::position()(p), f::smoothing_length()(p), f::step_begin(p),
-                                              f::time_bin(p), f::neighbour_bin(p));
+    flecsi_lite::execute<find_waking_bins<D>>(s.neighbours, s.clock.now, levels, f::position()(p),
+                                              f::smoothing_length()(p), f::step_begin(p), f::time_bin(p),
+                                              f::neighbour_bin(p));
+    flecsi_lite::reduce_ghosts<flecsi_lite::reduction::min>(f::neighbour_bin(p));
     s.woken += flecsi_lite::reduce<wake_bins<D>, flecsi_lite::reduction::sum>(
                  s.clock, levels, f::kind(p), f::neighbour_bin(p), f::acceleration(p), f::internal_energy_rate(p),
                  f::step_begin(p), f::time_bin(p), f::step_end(p), f::velocity_half(p), f::internal_energy_half(p))

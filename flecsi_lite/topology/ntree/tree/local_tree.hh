@@ -64,32 +64,6 @@ class local_tree {
   void refresh(const point<D>* x, const double* m, const double* h) {
     take_moved(x, m, h);
     tree_.refit_moved(x_.data(), m_.data(), h_.data(), moved_.data());
-    std::fill(moved_.begin(), moved_.end(), 0);
-  }
-
-  /// Takes the new smoothing lengths of the chosen particles only (storage_chosen[a] != 0, one
-  /// byte per stored particle; h a storage array) into the sorted copy; the nodes are not
-  /// refitted. A search from chosen targets then finds, among the particles whose position and h
-  /// have not changed since the last build or refresh, exactly the neighbours it would find after
-  /// a refresh: the nodes' boxes and largest h still bound those particles, and the pair test
-  /// reads each particle's own h. (The time-step limiter wakes waiting particles, whose h did not
-  /// change, from the ghosts that started a step: a refresh of every node for it cost more than
-  /// the walk on 2 ranks; docs/performance.md, "Stop 46".)
-  void take_smoothing_lengths_of(const std::vector<std::uint8_t>& storage_chosen, const double* h) {
-    if (storage_chosen.size() < size())
-      throw std::logic_error("ntree::local_tree: the mask of new smoothing lengths has fewer entries than the tree");
-    const std::size_t* from = sorted_to_storage_.data();
-    const std::uint8_t* chosen = storage_chosen.data();
-    double* sorted_h = h_.data();
-    std::uint8_t* moved = moved_.data();
-    flecsi_lite::forall(
-      size(),
-      [=](std::size_t s) {
-        if (!chosen[from[s]]) return;
-        sorted_h[s] = h[from[s]];
-        moved[s] = 1;  // its nodes' largest h are refitted at the next refresh
-      },
-      "ntree::local_tree::take_smoothing_lengths_of");
   }
 
   const hashed_tree<D>& tree() const { return tree_; }
@@ -104,7 +78,7 @@ class local_tree {
     const std::size_t per_particle = 2 * sizeof(std::size_t) + 2 * sizeof(std::uint8_t) + sizeof(key_type) +
                                      sizeof(std::uint64_t) + sizeof(point<D>) + 2 * sizeof(double);
     return sorted_to_storage_.capacity() * per_particle + tree_.bytes() + walk_.bytes() + target_mask_.capacity() +
-           selected_walk_.bytes() + source_walk_.bytes();
+           selected_walk_.bytes();
   }
   /// Sorted copies of the particle data the tree was built from.
   const std::vector<key_type>& keys() const { return keys_; }
@@ -129,24 +103,9 @@ class local_tree {
   void find_neighbours_of(const std::vector<std::uint8_t>& storage_targets, interaction kind, double support,
                           const domain<D>& space, neighbour_lists& out, const group_options& groups = {},
                           shift_storage shifts = shift_storage::separate) {
-    mark_targets(storage_targets, owned_);
+    mark_targets(storage_targets);
     reuse_walk(selected_walk_, target_mask_.data(), kind, support, groups)
       .find_neighbours(tree_, space, out, owned_rows(shifts));
-  }
-
-  /// Calls apply(a, b, shift) with storage indices for every target a, owned or ghost, with
-  /// storage_targets[a] != 0 (one byte per stored particle), and each neighbour b, as
-  /// for_each_neighbour does: a pass from a few particles to everything near them (the time-step
-  /// limiter's wake-up of the particles near active ones, whichever rank owns those).
-  template<class F>
-  void for_each_neighbour_of(const std::vector<std::uint8_t>& storage_targets, interaction kind, double support,
-                             const domain<D>& space, F&& apply, const group_options& groups = {}) {
-    mark_targets(storage_targets, size());
-    const std::size_t* map = sorted_to_storage_.data();
-    reuse_walk(source_walk_, target_mask_.data(), kind, support, groups)
-      .for_each_neighbour(tree_, space, [&apply, map](std::size_t a, std::size_t b, const point<D>& shift) {
-        apply(map[a], map[b], shift);
-      });
   }
 
   /// Calls apply(a, b, shift) with storage indices for every owned target a and each neighbour
@@ -182,8 +141,8 @@ class local_tree {
       "ntree::local_tree::gather");
   }
 
-  // gather for the same particles, marking in moved_ (which take_smoothing_lengths_of may have
-  // marked already) those whose x, m or h differ in any bit from the sorted copies.
+  // gather for the same particles, marking in moved_ those whose x, m or h differ in any bit from
+  // the sorted copies.
   void take_moved(const point<D>* x, const double* m, const double* h) {
     if (moved_.size() != size()) throw std::logic_error("ntree::local_tree: refresh of a tree that was not built");
     const std::size_t* from = sorted_to_storage_.data();
@@ -195,19 +154,20 @@ class local_tree {
       size(),
       [=](std::size_t s) {
         const std::size_t a = from[s];
-        bool changed = moved[s] != 0 || differs(m[a], sorted_m[s]) || differs(h[a], sorted_h[s]);
+        bool changed = differs(m[a], sorted_m[s]) || differs(h[a], sorted_h[s]);
         for (int k = 0; k < D; ++k) changed = changed || differs(x[a][k], sorted_x[s][k]);
+        moved[s] = changed;
         if (!changed) return;
         sorted_x[s] = x[a];
         sorted_m[s] = m[a];
         sorted_h[s] = h[a];
-        moved[s] = 1;
       },
       "ntree::local_tree::take_moved");
   }
 
-  // target_mask_ in sorted order from a mask over the first `count` storage indices.
-  void mark_targets(const std::vector<std::uint8_t>& storage_targets, std::size_t count) {
+  // target_mask_ in sorted order from a mask over the owned storage indices.
+  void mark_targets(const std::vector<std::uint8_t>& storage_targets) {
+    const std::size_t count = owned_;
     if (storage_targets.size() < count)
       throw std::logic_error("ntree::local_tree: the target mask has fewer entries than the targets it selects from");
     target_mask_.resize(size());
@@ -250,7 +210,7 @@ class local_tree {
   std::size_t owned_ = 0;
   std::vector<std::size_t> sorted_to_storage_, storage_to_sorted_;
   std::vector<std::uint8_t> owned_mask_;
-  // Sorted particles whose values changed since the nodes were last computed (refresh).
+  // Sorted particles whose values changed in the last refresh.
   std::vector<std::uint8_t> moved_;
   std::vector<key_type> keys_;
   std::vector<std::uint64_t> ids_;
@@ -258,9 +218,9 @@ class local_tree {
   std::vector<double> m_, h_;
   hashed_tree<D> tree_;
   group_walk<D> walk_;
-  // The walks over chosen targets (find_neighbours_of, for_each_neighbour_of) and their mask.
+  // The walk over chosen targets (find_neighbours_of) and their mask.
   std::vector<std::uint8_t> target_mask_;
-  group_walk<D> selected_walk_, source_walk_;
+  group_walk<D> selected_walk_;
 };
 
 }  // namespace flecsi_lite::topology::ntree

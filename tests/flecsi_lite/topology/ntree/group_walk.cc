@@ -92,12 +92,11 @@ TEST_CASE("group walk on a Plummer sphere with adaptive h", "[ntree][group_walk]
   }
 }
 
-// The time-step limiter's wake-up from ghost sources (specialization/sph/step/time_bins.hh) takes
-// the sources' new h into the tree without a refit (local_tree::take_smoothing_lengths_of) before
-// a group walk from them (local_tree::for_each_neighbour_of): a symmetric search from those
-// targets, grouped or one by one, must then find, among the particles whose h did not change,
+// A walk from targets whose h changed after the build, without a refit: a symmetric search from
+// those targets, grouped or one by one, must find, among the particles whose h did not change,
 // what it finds after a refit (the brute force with the new h), though the nodes' largest h are
-// stale, lower where a target's h grew and higher where it shrank.
+// stale, lower where a target's h grew and higher where it shrank. (The time-step limiter's
+// wake-up from ghost sources searched so until stop 49; docs/performance.md.)
 TEST_CASE("a search from targets whose h changed after the build is exact for the unchanged particles",
           "[ntree][group_walk]") {
   const auto space = nt::domain<3>::open();
