@@ -9,13 +9,18 @@ answers are known (docs/square.md, "Beyond 64^2"):
   cover is 1 - pi r^2 / (4 c^2) of the boxes of side c;
 - the corners' particles in place but below rho = 2.5: cover 0;
 - the circle of the same area (the square's lattice inside radius sqrt(1 / (4 pi))): cover about 0,
-  as the circle's own area fraction of the boxes.
+  as the circle's own area fraction of the boxes;
+- SWIFT's snapshots (measure_swift_square.py): the rounded square written in SWIFT's layout (ids
+  from 1, float densities) reads back as the same particles and gives the same measures.
 Exit 1 with the failures listed.
 """
 import math
 import os
+import subprocess
 import sys
+import tempfile
 
+import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "apps", "square"))
@@ -106,6 +111,36 @@ result = analysis.measures(first, round_data, first_id)
 expect(result["corner_cover"] < 0.01 and result["circle_corner_cover"] == 0.0,
        "circle of the same area: cover %.3f (below 0.01), the circle's share of the boxes %.3f (0)" %
        (result["corner_cover"], result["circle_corner_cover"]))
+
+# SWIFT's layout: the square's particles are found from the first snapshot's positions.
+def write_swift_snapshot(path, data, time):
+    with h5py.File(path, "w") as f:
+        f.create_group("Header").attrs["Time"] = time
+        gas = f.create_group("PartType0")
+        zeros = np.zeros(data["x"].size)
+        gas["Coordinates"] = np.column_stack([data["x"], data["y"], zeros])
+        gas["Velocities"] = np.column_stack([data["vx"], data["vy"], zeros]).astype(np.float32)
+        gas["Densities"] = data["rho"].astype(np.float32)
+        gas["ParticleIDs"] = (data["id"] + 1).astype(np.uint64)
+
+
+tool = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "apps", "square", "measure_swift_square.py")
+with tempfile.TemporaryDirectory() as folder:
+    start, end = os.path.join(folder, "square_0000.hdf5"), os.path.join(folder, "square_0020.hdf5")
+    write_swift_snapshot(start, first, 0.0)
+    write_swift_snapshot(end, rounded, 2.0)
+    printed = subprocess.run([sys.executable, tool, start, end], capture_output=True, text=True)
+    expected = analysis.measures(first, rounded, first_id)
+    line = "t = 2, %d square particles: squareness %.3f, corner cover %.3f" % (
+        expected["square_particles"], expected["squareness"], expected["corner_cover"])
+    expect(printed.returncode == 0 and line in printed.stdout,
+           "SWIFT snapshots: '%s' in the tool's output '%s'" % (line, printed.stdout.strip() + printed.stderr.strip()))
+    bad = os.path.join(folder, "not_swift.hdf5")
+    with h5py.File(bad, "w") as f:
+        f.create_group("Header")
+    printed = subprocess.run([sys.executable, tool, bad, end], capture_output=True, text=True)
+    expect(printed.returncode == 3 and "not_swift.hdf5" in printed.stderr and "is not a SWIFT gas snapshot" in printed.stderr,
+           "a file without PartType0: exit 3 naming it (%d, '%s')" % (printed.returncode, printed.stderr.strip()))
 
 if failures:
     print("square_measures: %d failure(s)" % len(failures), file=sys.stderr)
