@@ -237,7 +237,8 @@ double force_loop(const neighbourhood<D>& neighbours, const physics_settings& se
 /// pair forces are exactly opposite: momentum is conserved to round-off, energy to the accuracy of
 /// the time integration. Pressure-energy (field pressure_grad_h, present with formulation =
 /// pressure_energy) replaces p_a F_a by A_a (q_b - g_a) F_a and p_b F_b by A_b (q_a - g_b) F_b
-/// (detail::force_sums; P is then P_bar).
+/// (detail::force_sums; P is then P_bar). P is read only with the conductivity, u only with it or
+/// pressure-energy: otherwise they may be absent (update_forces does not pass them).
 template<int D, flecsi_lite::privilege Ghost>
 double compute_forces(neighbours_ro<D> neighbours, physics_settings settings, double earlier,
                       ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,

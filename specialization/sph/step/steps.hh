@@ -220,10 +220,14 @@ template<int D>
 void update_forces(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
-  const auto fields_read = std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p),
-                                           f::density(p), f::pressure(p), f::sound_speed(p), f::pressure_term(p),
-                                           f::internal_energy(p), f::balsara(p).only_if(s.physics.balsara),
-                                           f::viscosity_alpha(p).only_if(s.physics.viscosity_switch.enabled));
+  // P and u are read only by the conductivity and (u) pressure-energy SPH: otherwise their
+  // ghosts are not copied for the forces.
+  const bool conductivity = s.physics.conductivity > 0;
+  const auto fields_read = std::make_tuple(
+    f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
+    f::pressure(p).only_if(conductivity), f::sound_speed(p), f::pressure_term(p),
+    f::internal_energy(p).only_if(conductivity || s.physics.pressure_energy()),
+    f::balsara(p).only_if(s.physics.balsara), f::viscosity_alpha(p).only_if(s.physics.viscosity_switch.enabled));
   const auto fields_written =
     std::make_tuple(f::kind(p), f::acceleration(p), f::internal_energy_rate(p), f::own_time_step(p));
   const double none = std::numeric_limits<double>::max();
