@@ -55,21 +55,23 @@ void start_time_bins(wo<std::int32_t> time_bin, wo<std::int64_t> step_begin, wo<
     "sph::start_time_bins");
 }
 
-/// The targets whose step ends at tick `next`, for the pair tasks (neighbourhood::targets), and
-/// their work for balance = work: list length times how often the particle is active (2^-bin of
-/// the span; the others keep theirs). Returns how many targets are active and their list entries.
+/// The targets whose step ends at tick `next`, for the pair tasks (neighbourhood::targets), and,
+/// with balance = work (`work` present), their work: list length times how often the particle is
+/// active (2^-bin of the span; the others keep theirs). Returns how many targets are active and
+/// their list entries.
 template<int D>
 active_count select_active(typename tracked_neighbourhood<D>::template accessor<flecsi_lite::rw> neighbours,
                            std::int64_t next, ro<std::int64_t> step_end, ro<std::int32_t> time_bin, rw<double> work) {
   auto& n = *neighbours;
   active_count count;
+  double* const weight = work.data();  // null without balance = work
   const auto pick = [&](const std::vector<std::uint32_t>& all, std::vector<std::uint32_t>& active) {
     active.clear();
     for (const std::uint32_t a : all) {
       if (step_end(a) != next) continue;
       active.push_back(a);
       const double entries = static_cast<double>(n.lists.count(a));
-      work(a) = std::ldexp(entries, timeline::bins - time_bin(a));
+      if (weight) weight[a] = std::ldexp(entries, timeline::bins - time_bin(a));
       count.entries += entries;
     }
   };
@@ -380,8 +382,9 @@ template<int D>
 void select_active_targets(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
-  s.active_targets = flecsi_lite::reduce<select_active<D>, active_count_sum>(s.neighbours, s.clock.next, f::step_end(p),
-                                                                             f::time_bin(p), f::work(p));
+  s.active_targets = flecsi_lite::reduce<select_active<D>, active_count_sum>(
+    s.neighbours, s.clock.next, f::step_end(p), f::time_bin(p),
+    f::work(p).only_if(s.physics.balance == tree::balance::work));
 }
 
 /// Searches the neighbours of the particles whose step ends at s.clock.next (the others' rows
