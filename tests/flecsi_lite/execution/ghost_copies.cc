@@ -11,6 +11,7 @@
 #include <cmath>
 
 using namespace flecsi_lite;
+using testing::all_ranks;
 using testing::fill_scaled_index;
 using testing::ghosts_hold;
 using topology::narray;
@@ -38,11 +39,6 @@ void copy_back(field<double>::accessor<ro> from, field<double>::accessor<wo> to)
 }
 
 std::uint64_t copies() { return execution::executor::instance().ghost_copies_started(); }
-bool all_ranks(bool mine) {
-  int in = mine, out = 0;
-  MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LAND, runtime::communicator());
-  return out;
-}
 }  // namespace
 
 TEST_CASE("ghost copies happen when and only when ghost values are stale") {

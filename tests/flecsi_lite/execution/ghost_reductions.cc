@@ -15,6 +15,7 @@
 #include <utility>
 
 using namespace flecsi_lite;
+using testing::all_ranks;
 using testing::fill_scaled_index;
 using testing::ghosts_hold;
 using topology::narray;
@@ -47,12 +48,6 @@ std::vector<std::pair<double, double>> all_ghost_contributions(const narray& n) 
   std::vector<std::pair<double, double>> pairs;
   for (std::size_t i = 0; i < all.size(); i += 2) pairs.emplace_back(all[i], all[i + 1]);
   return pairs;
-}
-
-bool all_ranks(bool mine) {
-  int in = mine, out = 0;
-  MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LAND, runtime::communicator());
-  return out;
 }
 
 template<class Op>
