@@ -24,7 +24,7 @@ bool has_feature(const simulation<D>& s, const std::string& feature) {
   if (feature == "individual_time_steps") return s.physics.individual_time_steps();
   if (feature == "viscosity_switch") return s.physics.viscosity_switch.enabled;
   if (feature == "balsara_switch") return s.physics.balsara;
-  if (feature == "velocity_gradients") return s.physics.balsara || s.physics.individual_time_steps();
+  if (feature == "velocity_gradients") return s.physics.velocity_gradients();
   if (feature == "pressure_energy") return s.physics.pressure_energy();
   if (feature == "walls") return s.has_walls;
   throw std::logic_error("sph: a field is declared only_with(\"" + feature +

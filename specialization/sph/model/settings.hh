@@ -120,6 +120,9 @@ struct physics_settings {
   gravity_settings gravity{};
   time_step_settings time_steps{};
   bool individual_time_steps() const { return time_steps.stepping == time_stepping::individual; }
+  /// div v is read by the Balsara switch and by the individual steps' drift of the inactive
+  /// particles' rho and h (the density pass sums it).
+  bool velocity_gradients() const { return balsara || individual_time_steps(); }
 };
 
 /// A parameter_error naming the key `gravity` unless gravity is off or the problem is 3D with no

@@ -1,10 +1,10 @@
 // The equation-of-state task (P and the sound speed from rho and u; seed Algorithm 1, line 3); the
-// velocity divergence and curl that the Balsara (1995) switch reads are in velocity_gradients.hh.
+// velocity divergence and curl that the Balsara (1995) switch reads come from the density pass
+// (density.hh, velocity_gradients.hh).
 #pragma once
 
 #include "specialization/sph/model/tasks.hh"
 #include "specialization/sph/step/density.hh"
-#include "specialization/sph/step/velocity_gradients.hh"
 
 #include "specialization/physics/eos.hh"
 #include "specialization/physics/pressure_energy.hh"
@@ -16,7 +16,7 @@ namespace flecsph::sph {
 inline double pressure_over_rho2(double P, double omega, double rho) { return P / (omega * rho * rho); }
 
 /// Pressure, sound speed and P / (Omega rho^2) of every owned particle; the Balsara factor when
-/// the switch is on (from the velocity gradients of compute_velocity_gradients; with it off the
+/// the switch is on (from the velocity gradients of the density pass; with it off the
 /// gradients and the factor are absent fields, empty accessors, and the force loop takes 1).
 /// Pressure-energy (P_bar present): P = P_bar of the density pass, c = sqrt(gamma P_bar / rho)
 /// and the pressure term A = (gamma-1) u / P_bar (physics/pressure_energy.hh).

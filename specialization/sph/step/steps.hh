@@ -146,7 +146,9 @@ void update_neighbours(simulation<D>& s, bool redistribute = false) {
   if (s.physics.individual_time_steps()) select_active_targets(s);
 }
 
-/// Density and smoothing length; when some h outgrew the searched reach, searches again with the
+/// Density and smoothing length, and the velocity gradients where they are read (div v for the
+/// Balsara switch or individual time steps' drift of the inactive particles' rho and h, |curl v|
+/// for the Balsara switch); when some h outgrew the searched reach, searches again with the
 /// grown h and repeats (the same decision on every rank, so results stay rank-count independent).
 /// The search again redistributes only when the ghosts no longer suffice for the grown h.
 /// Each pair task is launched over the interior targets, then the boundary ones
@@ -167,10 +169,15 @@ void update_density(simulation<D>& s) {
     return reduce_interior_then_boundary<compute_density<D, na>, compute_density<D, ro>, max>(s.neighbours, s.physics,
                                                                                               0.0, field...);
   };
+  // The fields of a physics that is off are absent (only_if): no memory, the tasks' null paths.
+  const bool gradients = s.physics.velocity_gradients();
   for (int attempt = 0;; ++attempt) {
-    const double worst = std::apply(launch, std::make_tuple(f::position()(p), f::mass()(p), f::kind(p),
-                                                            f::smoothing_length()(p), f::density(p), f::omega(p)))
-                           .get();
+    const double worst =
+      std::apply(launch, std::make_tuple(f::position()(p), f::mass()(p), f::kind(p), f::smoothing_length()(p),
+                                         f::density(p), f::omega(p), f::velocity(p).only_if(gradients),
+                                         f::velocity_divergence(p).only_if(gradients),
+                                         f::velocity_curl(p).only_if(s.physics.balsara)))
+        .get();
     if (worst <= 1.0) return;
     if (attempt == 20) {
       std::ostringstream m;
@@ -188,29 +195,16 @@ void update_density(simulation<D>& s) {
   }
 }
 
-/// Velocity gradients (for the Balsara switch, and with individual time steps for the drift of the
-/// inactive particles' density and h), pressure and sound speed.
+/// Pressure and sound speed (and the Balsara factor from the density pass's velocity gradients).
 template<int D>
 void update_pressure(simulation<D>& s) {
   using f = fields<D>;
   auto& p = *s.particles;
-  // The fields of a physics that is off are absent (only_if): no memory, the tasks' null paths.
-  const bool gradients = s.physics.balsara || s.physics.individual_time_steps();
-  const auto curl = f::velocity_curl(p).only_if(s.physics.balsara);
-  const auto balsara = f::balsara(p).only_if(s.physics.balsara);
-  if (gradients)
-    std::apply(
-      [&](auto&&... field) {
-        execute_interior_then_boundary<compute_velocity_gradients<D, flecsi_lite::na>,
-                                       compute_velocity_gradients<D, flecsi_lite::ro>>(s.neighbours, s.physics,
-                                                                                       field...);
-      },
-      std::make_tuple(f::position()(p), f::velocity(p), f::mass()(p), f::smoothing_length()(p), f::density(p),
-                      f::omega(p), f::velocity_divergence(p), curl));
   flecsi_lite::execute<compute_equation_of_state<D>>(
     s.physics, f::density(p), f::internal_energy(p), f::smoothing_length()(p), f::omega(p),
-    f::velocity_divergence(p).only_if(gradients), curl, f::smoothed_pressure(p).only_if(s.physics.pressure_energy()),
-    f::pressure(p), f::sound_speed(p), f::pressure_term(p), balsara);
+    f::velocity_divergence(p).only_if(s.physics.velocity_gradients()), f::velocity_curl(p).only_if(s.physics.balsara),
+    f::smoothed_pressure(p).only_if(s.physics.pressure_energy()), f::pressure(p), f::sound_speed(p),
+    f::pressure_term(p), f::balsara(p).only_if(s.physics.balsara));
 }
 
 /// Accelerations and du/dt (with self-gravity: plus the grad-h gravity term and the tree's

@@ -3,119 +3,172 @@
 // form; zero in 1D). The Balsara (1995) switch reads both; individual time steps drift the
 // inactive particles' rho and h with div v (time_bins.hh).
 //
-// The pair terms are computed on packs (numerics/simd.hh: every lane the scalar operations in the
-// scalar order) and then added one by one in list order, as the plain loop over the list adds
-// them (numerics/ordered_sum.hh): the sums are bitwise those of that loop, so moving the task onto
-// packs changed no output. The plain loop spent 17% of an individual-step Sedov run (30^3, AMD
-// Zen 2, perf) on one square root and one kernel derivative per pair; docs/performance.md.
+// They are summed in the density pass (density.hh), once a's h is final: that pass has already
+// decoded a's list and gathered |r_ab| and m_b, so the sums cost no second walk of the list, no
+// second square root and no second gather of the positions (a task of their own took as long as
+// the density; docs/performance.md). Their pair terms are computed on packs
+// (numerics/simd.hh: every lane the scalar operations in the scalar order) and added one by one
+// in list order, as the plain loop over the list adds them: the sums are bitwise that loop's. Such
+// a sum is one chain of dependent adds, so the density pass runs the chains of 8 targets side by
+// side (sum_gradient_terms).
 #pragma once
 
 #include "specialization/physics/kernels/kernel_at.hh"
 #include "specialization/sph/model/neighbourhood.hh"
-#include "specialization/sph/model/settings.hh"
-#include "specialization/sph/model/tasks.hh"
 
 #include "specialization/numerics/simd.hh"
-#include "specialization/physics/kernels.hh"
-
-#include "flecsi_lite/execution.hh"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <type_traits>
+#include <iterator>
+#include <limits>
+#include <vector>
 
-namespace flecsph::sph {
+namespace flecsph::sph::detail {
 
-namespace detail {
-/// The packs of the gradient sums: the adds are one lane at a time, so wider packs gain little.
-using gradient_pack = physics::simd::pack_at_most<4>;
+/// What the gradient sums need of a's list beside |r_ab| and m_b, gathered per entry with them
+/// (padded as they are, to whole packs): |r_ab|^2, for the plain loop's reach test to the bit,
+/// the products (v_a - v_b)_k r_ab,k (k < D) and, with the curl, (v_ab x r_ab)_k. The kernel
+/// factor depends on the final h_a and multiplies them in the sums.
+struct gathered_velocities {
+  std::vector<double> r2;
+  std::vector<double> dv_r[3], cross[3];
+  bool with_curl = false;
 
-/// sum_b m_b v_ab . r_ab F_ab (into `div`) and, with WithCurl, sum_b m_b (v_ab x r_ab) F_ab (into
-/// `rotation`) over a's list, F_ab = (1/r) dW/dr at h_a, for the entries with 0 < |r_ab|^2 < reach2;
-/// T the number type of the pair arithmetic (double: the plain loop). A skipped entry adds +0 or
-/// -0, which leaves a sum that started at +0 as skipping it does.
-template<class Kernel, int D, bool WithCurl, class T = gradient_pack>
-void velocity_gradient_sums(const neighbour_walk<D>& walk, std::size_t a, const vector<D>* x, const vector<D>* v,
-                            const double* m, const kernel_at<Kernel>& kernel_a, double reach2, double& div,
-                            vector<3>& rotation) {
+  void make_room(std::size_t padded, int dimension) {
+    if (r2.size() >= padded) return;
+    r2.resize(padded);
+    for (int k = 0; k < dimension; ++k) dv_r[k].resize(padded);
+    for (auto& c : cross) c.resize(padded);
+  }
+};
+
+/// Stores the terms of the entries i .. i + lanes<T> (neighbours b, separations r and r2 as the
+/// density pass gathered them).
+template<int D, class T, std::size_t Lanes>
+FLECSPH_SIMD_INLINE void gather_velocity_terms(std::size_t i, const std::size_t (&b)[Lanes], const T (&r)[D],
+                                               const T& r2, const vector<D>& v_a, const vector<D>* v,
+                                               gathered_velocities& out) {
   namespace simd = physics::simd;
-  constexpr std::size_t W = simd::lanes<T>;
   const T zero = 0.0;
-  const neighbour_row<D> row = walk.row(a);
-  const std::size_t end = row.size();
-  for (std::size_t j = 0; j < end; j += W) {
-    std::size_t b[W];
-    T r[D];
-    const T r2 = row.separations(j, x[a], x, b, r);
-    const auto inside = (r2 < reach2) && (r2 != 0.0);
-    const T factor = simd::generate<T>([&](std::size_t l) { return m[b[l]]; }) *
-                     kernel_a.gradient_factor(simd::square_root(r2));  // grad W = r factor
-    // The plain loop's vector<3> of dv and r, zero beyond D.
-    T dv[3] = {zero, zero, zero}, rr[3] = {zero, zero, zero}, div_terms[D];
-    for (int k = 0; k < D; ++k) {
-      dv[k] = v[a][k] - simd::generate<T>([&](std::size_t l) { return v[b[l]][k]; });
-      rr[k] = r[k];
-      div_terms[k] = simd::select(inside, dv[k] * r[k] * factor, zero);
-    }
-    T rotation_terms[3];
-    if constexpr (WithCurl) {
-      rotation_terms[0] = simd::select(inside, (dv[1] * rr[2] - dv[2] * rr[1]) * factor, zero);
-      rotation_terms[1] = simd::select(inside, (dv[2] * rr[0] - dv[0] * rr[2]) * factor, zero);
-      rotation_terms[2] = simd::select(inside, (dv[0] * rr[1] - dv[1] * rr[0]) * factor, zero);
-    }
-    // In list order; the lanes past the list's end (repeats of its last entry) are left out.
-    const std::size_t lanes = std::min(W, end - j);
-    for (std::size_t l = 0; l < lanes; ++l) {
-      for (int k = 0; k < D; ++k) div += simd::element(div_terms[k], l);
-      if constexpr (WithCurl)
-        for (int k = 0; k < 3; ++k) rotation[k] += simd::element(rotation_terms[k], l);
-    }
+  // The plain loop's vector<3> of dv and r, zero beyond D.
+  T dv[3] = {zero, zero, zero}, rr[3] = {zero, zero, zero};
+  for (int k = 0; k < D; ++k) {
+    dv[k] = v_a[k] - simd::generate<T>([&](std::size_t l) { return v[b[l]][k]; });
+    rr[k] = r[k];
+    simd::store(T(dv[k] * r[k]), out.dv_r[k].data() + i);
+  }
+  simd::store(r2, out.r2.data() + i);
+  if (out.with_curl) {
+    simd::store(T(dv[1] * rr[2] - dv[2] * rr[1]), out.cross[0].data() + i);
+    simd::store(T(dv[2] * rr[0] - dv[0] * rr[2]), out.cross[1].data() + i);
+    simd::store(T(dv[0] * rr[1] - dv[1] * rr[0]), out.cross[2].data() + i);
   }
 }
-}  // namespace detail
 
-/// div v and, when `curl` is present (the Balsara switch), |curl v| of the owned targets of one
-/// part (neighbourhood::targets): the interior ones with Ghost = na, the boundary ones with
-/// Ghost = ro.
-template<int D, flecsi_lite::privilege Ghost>
-void compute_velocity_gradients(neighbours_ro<D> neighbours_object, physics_settings settings,
-                                ro_neighbours<vector<D>, Ghost> x, ro_neighbours<vector<D>, Ghost> v,
-                                ro_neighbours<double, Ghost> m, ro<double> h, ro<double> rho, ro<double> omega,
-                                wo<double> divergence, wo<double> curl) {
-  const neighbourhood<D>& neighbours = *neighbours_object;
-  const neighbour_walk<D> walk(neighbours);
-  const std::vector<std::uint32_t>& targets = neighbours.targets(Ghost);
-  const vector<D>*xs = x.data(), *vs = v.data();
-  const double* ms = m.data();
-  const auto loop = [&](auto kernel, auto with_curl) {
-    using Kernel = decltype(kernel);
-    constexpr bool WithCurl = decltype(with_curl)::value;
-    flecsi_lite::forall(
-      targets.size(),
-      [&](std::size_t i) {
-        const std::size_t a = targets[i];
-        const double h_a = h(a);
-        const kernel_at<Kernel> kernel_a(h_a);  // 1/h and the normalisation once per target
-        const double reach2 = physics::kernel_support * physics::kernel_support * h_a * h_a;
-        double div = 0;
-        vector<3> rotation{};
-        detail::velocity_gradient_sums<Kernel, D, WithCurl>(walk, a, xs, vs, ms, kernel_a, reach2, div, rotation);
-        const double scale = -1.0 / (omega(a) * rho(a));
-        divergence(a) = scale * div;
-        if constexpr (WithCurl)
-          curl(a) = std::fabs(scale) *
-                    std::sqrt(rotation[0] * rotation[0] + rotation[1] * rotation[1] + rotation[2] * rotation[2]);
-      },
-      "sph::compute_velocity_gradients");
-  };
-  // absent without the Balsara switch: div v only
-  physics::dispatch_kernel<D>(settings.kernel, [&](auto kernel) {
-    if (curl.data() != nullptr)
-      loop(kernel, std::true_type{});
-    else
-      loop(kernel, std::false_type{});
-  });
+/// Pads the entries count .. padded as out of reach.
+inline void pad_velocity_terms(std::size_t count, std::size_t padded, int dimension, gathered_velocities& out) {
+  for (std::size_t i = count; i < padded; ++i) {
+    out.r2[i] = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < dimension; ++k) out.dv_r[k][i] = 0.0;
+    if (out.with_curl)
+      for (auto& c : out.cross) c[i] = 0.0;
+  }
 }
 
-}  // namespace flecsph::sph
+/// Targets whose sums are added side by side. Each target's sum is one chain of dependent adds in
+/// list order (the order that fixes its bits): alone, a target waits one add latency per term, D
+/// per entry; the chains of 8 targets, one a lane of a pack, keep the adder busy.
+inline constexpr std::size_t gradient_block = 8;
+
+/// The terms of a block's targets, term i of target t at i * gradient_block + t: D per entry for
+/// div v, 3 per entry for the rotation. One per thread, reused from block to block.
+struct gradient_terms {
+  std::vector<double> div, rotation;
+  std::size_t length[gradient_block] = {};  ///< list entries of target t (0: no target)
+
+  void start_block() { std::fill(std::begin(length), std::end(length), std::size_t(0)); }
+};
+
+/// Writes target t's terms of sum_b m_b v_ab . r_ab F_ab and, with WithCurl, of sum_b m_b
+/// (v_ab x r_ab) F_ab over its `count` gathered entries (|r_ab| in r, m_b in m), F_ab = (1/r) dW/dr
+/// at h_a, in the order the plain loop adds them; the entries with |r_ab|^2 = 0 or >= reach2 give
+/// +0 (which leaves a sum that started at +0 as skipping them does). T the number type of the
+/// pair arithmetic (double: the plain loop).
+template<class Kernel, int D, bool WithCurl, class T>
+void write_gradient_terms(const gathered_velocities& g, const double* r, const double* m, std::size_t count,
+                          const kernel_at<Kernel>& kernel_a, double reach2, std::size_t t, gradient_terms& out) {
+  namespace simd = physics::simd;
+  constexpr std::size_t W = simd::lanes<T>, B = gradient_block;
+  const auto make_room = [&](std::vector<double>& terms, std::size_t per_entry) {
+    if (terms.size() < count * per_entry * B) terms.resize(count * per_entry * B + count * per_entry * B / 4);
+  };
+  make_room(out.div, D);
+  if constexpr (WithCurl) make_room(out.rotation, 3);
+  const T zero = 0.0;
+  for (std::size_t j = 0; j < count; j += W) {
+    const T r2 = simd::load<T>(g.r2.data() + j);
+    const auto inside = (r2 < reach2) && (r2 != 0.0);
+    const T factor = simd::load<T>(m + j) * kernel_a.gradient_factor(simd::load<T>(r + j));  // grad W = r factor
+    T div_terms[D], rotation_terms[3];
+    for (int k = 0; k < D; ++k) div_terms[k] = simd::select(inside, simd::load<T>(g.dv_r[k].data() + j) * factor, zero);
+    if constexpr (WithCurl)
+      for (int k = 0; k < 3; ++k)
+        rotation_terms[k] = simd::select(inside, simd::load<T>(g.cross[k].data() + j) * factor, zero);
+    // The padding lanes are left out.
+    const std::size_t lanes = std::min(W, count - j);
+    for (std::size_t l = 0; l < lanes; ++l) {
+      for (int k = 0; k < D; ++k) out.div[((j + l) * D + k) * B + t] = simd::element(div_terms[k], l);
+      if constexpr (WithCurl)
+        for (int k = 0; k < 3; ++k) out.rotation[((j + l) * 3 + k) * B + t] = simd::element(rotation_terms[k], l);
+    }
+  }
+  out.length[t] = count;
+}
+
+/// The sums of the block's targets t < gradient_block (those without terms give 0): each adds its
+/// terms one by one in list order, the plain loop's order, so the bits are that loop's; the
+/// chains run side by side in the lanes of a pack, the shorter ones padded with +0 (a sum that
+/// starts at +0 is never -0, so adding +0 leaves it as it is).
+template<int D, bool WithCurl>
+void sum_gradient_terms(gradient_terms& terms, double (&div)[gradient_block], vector<3> (&rotation)[gradient_block]) {
+  namespace simd = physics::simd;
+  constexpr std::size_t B = gradient_block;
+  using chains = simd::pack_at_most<B>;
+  constexpr std::size_t W = simd::lanes<chains>;
+  const std::size_t longest = *std::max_element(std::begin(terms.length), std::end(terms.length));
+  if (terms.div.size() < longest * D * B) terms.div.resize(longest * D * B);  // targets without terms
+  if (WithCurl && terms.rotation.size() < longest * 3 * B) terms.rotation.resize(longest * 3 * B);
+  for (std::size_t t = 0; t < B; ++t) {
+    for (std::size_t i = terms.length[t] * D; i < longest * D; ++i) terms.div[i * B + t] = 0.0;
+    if constexpr (WithCurl)
+      for (std::size_t i = terms.length[t] * 3; i < longest * 3; ++i) terms.rotation[i * B + t] = 0.0;
+  }
+  chains div_sum[B / W], rotation_sum[3][B / W];
+  for (std::size_t g = 0; g < B / W; ++g) {
+    div_sum[g] = 0.0;
+    for (int k = 0; k < 3; ++k) rotation_sum[k][g] = 0.0;
+  }
+  for (std::size_t i = 0; i < longest * D; ++i)
+    for (std::size_t g = 0; g < B / W; ++g) div_sum[g] += simd::load<chains>(terms.div.data() + i * B + g * W);
+  if constexpr (WithCurl)
+    for (std::size_t i = 0; i < longest; ++i)
+      for (int k = 0; k < 3; ++k)
+        for (std::size_t g = 0; g < B / W; ++g)
+          rotation_sum[k][g] += simd::load<chains>(terms.rotation.data() + (i * 3 + k) * B + g * W);
+  for (std::size_t t = 0; t < B; ++t) {
+    div[t] = simd::element(div_sum[t / W], t % W);
+    for (int k = 0; k < 3; ++k) rotation[t][k] = WithCurl ? simd::element(rotation_sum[k][t / W], t % W) : 0.0;
+  }
+}
+
+/// Where the density pass writes the gradients (owned), and the velocities they read (owned and
+/// ghosts); null `divergence`: no gradients, null `curl`: div v only.
+template<int D>
+struct velocity_gradient_outputs {
+  const vector<D>* v = nullptr;
+  double *divergence = nullptr, *curl = nullptr;
+};
+
+}  // namespace flecsph::sph::detail

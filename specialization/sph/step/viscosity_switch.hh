@@ -33,7 +33,7 @@ namespace flecsph::sph {
 /// div v_a, tr(S_a S_a^T) and d(div v)/dt of the owned targets of one part, S the traceless
 /// symmetric part of the SPH velocity gradient dv_k/dx_l = -1/(Omega_a rho_a) sum_b m_b
 /// (v_a - v_b)_k r_ab,l F_a (grad_a W_ab = r_ab F_a; Price 2012, JCP 231, 759, eq. 101): its trace
-/// is the div v of compute_velocity_gradients. div a, the same estimate on the accelerations of
+/// is the div v of the density pass (velocity_gradients.hh). div a, the same estimate on the accelerations of
 /// the last force evaluation, gives d(div v)/dt = div a - tr(grad v grad v).
 template<int D, flecsi_lite::privilege Ghost>
 void compute_switch_gradients(neighbours_ro<D> neighbours_object, physics_settings settings,

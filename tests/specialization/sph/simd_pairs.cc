@@ -3,10 +3,12 @@
 // and without conductivity, the grad-h gravity term and pressure-energy) and the density sums (at h and at grown
 // and shrunk h, so that the kernel's edge falls inside the lists) are bitwise equal: the striped
 // sums (simd::striped_sum) add each list entry to the same stripe whatever the lane count. The velocity
-// gradients on packs are bitwise the plain loop over the list that the task ran before them. The physics
+// gradients of the density pass, on packs, are bitwise the plain loop over the list that their
+// own task ran before them. The physics
 // of the single lane is checked against direct sums in forces.cc and density.cc.
 #include "sph_setup.hh"
 
+#include "specialization/sph/step/density.hh"
 #include "specialization/sph/step/forces.hh"
 
 #include <catch2/catch.hpp>
@@ -14,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -69,7 +72,7 @@ void compare_density(const sph::neighbour_walk<D>& walk, std::size_t owned, cons
 }
 
 /// div and the rotation sums of a's list as the gradient task's plain loop added them before the
-/// packs (velocity_gradients.hh): the reference bits.
+/// packs: the reference bits.
 template<class Kernel, int D>
 void plain_gradient_sums(const sph::neighbour_walk<D>& walk, std::size_t a, const sph::vector<D>* x,
                          const sph::vector<D>* v, const double* m, double h_a, double& div, sph::vector<3>& rotation) {
@@ -94,25 +97,54 @@ void plain_gradient_sums(const sph::neighbour_walk<D>& walk, std::size_t a, cons
   }
 }
 
+/// The density pass's gradient sums (terms gathered with the density's pairs, computed on packs
+/// and on one lane, summed in blocks of targets side by side) against the plain loop, target by
+/// target: blocks of consecutive particles and of every third one (lists of other lengths side by
+/// side, and a last block that is not full), at h and at grown and shrunk h.
 template<class Kernel, int D>
 void compare_gradients(const sph::neighbour_walk<D>& walk, std::size_t owned, const sph::detail::force_fields<D>& in,
                        comparison& result, std::size_t& nonzero) {
-  for (std::size_t a = 0; a < owned; ++a)
+  constexpr std::size_t B = sph::detail::gradient_block;
+  sph::detail::gathered_pairs pairs;
+  sph::detail::gradient_terms packs_curl, one_lane_curl, packs_div;
+  for (std::size_t stride : {1, 3})
     for (double factor : {0.9, 1.0, 1.04}) {  // the kernel's edge inside the list
-      const double h_a = factor * in.h[a];
-      const double reach2 = flecsph::physics::kernel_support * flecsph::physics::kernel_support * h_a * h_a;
-      double div_plain = 0, div_curl = 0, div_only = 0;
-      sph::vector<3> rotation_plain{}, rotation_curl{}, rotation_none{};
-      plain_gradient_sums<Kernel, D>(walk, a, in.x, in.v, in.m, h_a, div_plain, rotation_plain);
-      const sph::kernel_at<Kernel> kernel_a(h_a);
-      sph::detail::velocity_gradient_sums<Kernel, D, true>(walk, a, in.x, in.v, in.m, kernel_a, reach2, div_curl,
-                                                           rotation_curl);
-      sph::detail::velocity_gradient_sums<Kernel, D, false>(walk, a, in.x, in.v, in.m, kernel_a, reach2, div_only,
-                                                            rotation_none);
-      result.add(div_curl, div_plain);
-      result.add(div_only, div_plain);
-      for (int k = 0; k < 3; ++k) result.add(rotation_curl[k], rotation_plain[k]);
-      nonzero += div_plain != 0;
+      std::vector<std::size_t> targets;
+      for (std::size_t a = 0; a < owned; a += stride) targets.push_back(a);
+      for (std::size_t first = 0; first < targets.size(); first += B) {
+        const std::size_t count = std::min(B, targets.size() - first);
+        for (auto* terms : {&packs_curl, &one_lane_curl, &packs_div}) terms->start_block();
+        for (std::size_t t = 0; t < count; ++t) {
+          const std::size_t a = targets[first + t];
+          const double h_a = factor * in.h[a];
+          const double reach2 = flecsph::physics::kernel_support * flecsph::physics::kernel_support * h_a * h_a;
+          const sph::kernel_at<Kernel> kernel_a(h_a);
+          pairs.velocities.with_curl = true;
+          sph::detail::gather_pairs<D>(walk.row(a), a, in.x, in.m, pairs, nullptr, in.v);
+          const auto write = [&](auto curl, auto number, sph::detail::gradient_terms& terms) {
+            sph::detail::write_gradient_terms<Kernel, D, decltype(curl)::value, decltype(number)>(
+              pairs.velocities, pairs.r.data(), pairs.m.data(), pairs.count, kernel_a, reach2, t, terms);
+          };
+          write(std::true_type{}, sph::detail::density_pack{}, packs_curl);
+          write(std::true_type{}, double{}, one_lane_curl);
+          write(std::false_type{}, sph::detail::density_pack{}, packs_div);
+        }
+        double div[3][B];
+        sph::vector<3> rotation[3][B];
+        sph::detail::sum_gradient_terms<D, true>(packs_curl, div[0], rotation[0]);
+        sph::detail::sum_gradient_terms<D, true>(one_lane_curl, div[1], rotation[1]);
+        sph::detail::sum_gradient_terms<D, false>(packs_div, div[2], rotation[2]);
+        for (std::size_t t = 0; t < count; ++t) {
+          const std::size_t a = targets[first + t];
+          double div_plain = 0;
+          sph::vector<3> rotation_plain{};
+          plain_gradient_sums<Kernel, D>(walk, a, in.x, in.v, in.m, factor * in.h[a], div_plain, rotation_plain);
+          for (int variant = 0; variant < 3; ++variant) result.add(div[variant][t], div_plain);
+          for (int variant = 0; variant < 2; ++variant)
+            for (int k = 0; k < 3; ++k) result.add(rotation[variant][t][k], rotation_plain[k]);
+          nonzero += div_plain != 0;
+        }
+      }
     }
 }
 

@@ -82,7 +82,8 @@ TEST_CASE("the interior launch reads no ghost and writes no boundary target") {
   for (const auto a : s.neighbours.host().interior) rho(a) = 0;
   const double worst = flecsi_lite::execute<sph::compute_density<D, flecsi_lite::na>>(
                          s.neighbours, s.physics, 0.0, f::position()(p), f::mass()(p), f::kind(p),
-                         f::smoothing_length()(p), f::density(p), f::omega(p))
+                         f::smoothing_length()(p), f::density(p), f::omega(p), f::velocity(p).only_if(false),
+                         f::velocity_divergence(p).only_if(false), f::velocity_curl(p).only_if(false))
                          .get();
   CHECK(std::isfinite(worst));
   const auto after = flecsi_lite::host_view(f::density(p));
