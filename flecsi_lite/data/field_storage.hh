@@ -5,6 +5,7 @@
 
 #include "flecsi_lite/util/kokkos.hh"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -37,6 +38,16 @@ class field_storage_base {
   virtual void unpack(const std::byte* in, std::size_t first, std::size_t count) = 0;
   /// Copies the `count` elements from position `first` into `out` (unpack's inverse).
   virtual void pack_range(std::size_t first, std::size_t count, std::byte* out) const = 0;
+  /// Copies into `out` the elements at `indices` whose bytes differ from `previous` (`count`
+  /// elements, then overwritten with the current ones), or every element when `compare` is
+  /// false, and marks them in `mask` (bit i % 8 of byte i / 8, for element i); returns the bytes
+  /// written to `out`.
+  virtual std::size_t pack_changed(const std::size_t* indices, std::size_t count, bool compare, std::byte* previous,
+                                   std::uint8_t* mask, std::byte* out) const = 0;
+  /// pack_changed's inverse: the marked elements of positions first, ..., first + count - 1 take
+  /// the values in `in`, in order; returns the bytes read.
+  virtual std::size_t unpack_marked(const std::uint8_t* mask, const std::byte* in, std::size_t first,
+                                    std::size_t count) = 0;
 
  private:
   std::string name_;
@@ -102,6 +113,42 @@ class field_storage final : public field_storage_base {
 
   void pack_range(std::size_t first, std::size_t count, std::byte* out) const override {
     if (count) std::memcpy(out, view_.data() + first, count * sizeof(T));
+  }
+
+  std::size_t pack_changed(const std::size_t* indices, std::size_t count, bool compare, std::byte* previous,
+                           std::uint8_t* mask, std::byte* out) const override {
+    std::byte* const start = out;
+    std::fill(mask, mask + (count + 7) / 8, std::uint8_t(0));
+    for (std::size_t i = 0; i < count; ++i) {
+      const T& value = view_(indices[i]);
+      std::byte* last = previous + i * sizeof(T);
+      if (compare && std::memcmp(&value, last, sizeof(T)) == 0) continue;
+      std::memcpy(last, &value, sizeof(T));
+      std::memcpy(out, &value, sizeof(T));
+      out += sizeof(T);
+      mask[i / 8] |= std::uint8_t(1u << (i % 8));
+    }
+    return std::size_t(out - start);
+  }
+
+  std::size_t unpack_marked(const std::uint8_t* mask, const std::byte* in, std::size_t first,
+                            std::size_t count) override {
+    const std::byte* const start = in;
+    T* values = view_.data() + first;
+    for (std::size_t i = 0; i < count; i += 8) {
+      if (mask[i / 8] == 0) continue;               // most entries of a copy that sends few
+      if (mask[i / 8] == 0xff && i + 8 <= count) {  // most entries of a copy that sends all
+        std::memcpy(values + i, in, 8 * sizeof(T));
+        in += 8 * sizeof(T);
+        continue;
+      }
+      for (std::size_t j = i; j < std::min(count, i + 8); ++j)
+        if ((mask[j / 8] >> (j % 8)) & 1u) {
+          std::memcpy(values + j, in, sizeof(T));
+          in += sizeof(T);
+        }
+    }
+    return std::size_t(in - start);
   }
 
  private:

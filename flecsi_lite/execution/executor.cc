@@ -163,7 +163,10 @@ launch_ptr executor::record(std::string name, launch_kind kind, const std::vecto
       state.eager_after.clear();
     }
     if (writes(a.owned)) state.ghosts_valid = false;  // shared values may have changed
-    if (writes(a.ghost)) state.ghosts_valid = true;   // the task defined the ghost values
+    if (writes(a.ghost)) {
+      state.ghosts_valid = true;  // the task defined the ghost values
+      state.receivers_hold_sent = false;
+    }
   }
   l->sequence = next_sequence_++;
   if (kind == launch_kind::reduction) l->collective_index = next_collective_recorded_++;
@@ -184,7 +187,7 @@ launch_ptr executor::record(std::string name, launch_kind kind, const std::vecto
 
 launch_ptr executor::record_ghost_copy(const std::vector<const field_access*>& fields) {
   data::topology_base* topology = fields.front()->topology;
-  std::vector<data::field_storage_base*> storages;
+  std::vector<detail::copied_field> copied;
   const int tag = first_copy_tag + static_cast<int>(ghost_updates_++ % copy_tag_count);
   ghost_copies_ += fields.size();  // field copies; they travel together, one message per peer
   auto l = std::make_shared<launch>();
@@ -194,11 +197,13 @@ launch_ptr executor::record_ghost_copy(const std::vector<const field_access*>& f
     field_state& state = fields_[{topology->instance_id(), a->field}];
     add_dependencies(*l, state, region::owned, ro);
     add_dependencies(*l, state, region::ghost, wo);
-    storages.push_back(a->storage);
-    l->name += (storages.size() == 1 ? " " : ", ") + a->storage->name();
+    if (!state.sent) state.sent = std::make_shared<detail::sent_ghost_values>();
+    copied.push_back({a->storage, state.sent, state.receivers_hold_sent});
+    state.receivers_hold_sent = true;
+    l->name += (copied.size() == 1 ? " " : ", ") + a->storage->name();
   }
 
-  l->start = detail::ghost_copy_start(topology, std::move(storages), tag, &traffic_);
+  l->start = detail::ghost_copy_start(topology, std::move(copied), tag, &traffic_);
 
   for (const field_access* a : fields) {
     field_state& state = fields_[{topology->instance_id(), a->field}];
@@ -427,7 +432,11 @@ void executor::before_layout_change(std::uint64_t) { wait_all(); }
 
 void executor::after_layout_change(std::uint64_t topology_id) {
   for (auto& [key, state] : fields_)
-    if (key.first == topology_id) state.ghosts_valid = false;
+    if (key.first == topology_id) {
+      state.ghosts_valid = false;
+      state.receivers_hold_sent = false;
+      state.sent.reset();  // the old layout's values
+    }
 }
 
 void executor::topology_destroyed(std::uint64_t topology_id) {

@@ -35,9 +35,13 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <memory>
 #include <set>
 
 namespace flecsi_lite::execution {
+namespace detail {
+struct sent_ghost_values;
+}
 
 /// What this rank's ghost copies sent and received (messages to and from other ranks; a
 /// periodic image of the rank's own entities is no message).
@@ -125,6 +129,10 @@ class executor final : public data::layout_listener {
     // delivered; writers whose copy was overwritten unread get no eager copy again.
     std::string eager_after;
     std::set<std::string> copy_wasted_after;
+    // What its copies last sent to each peer, and whether the peers' ghosts still hold it (no
+    // launch recorded since the last copy writes the ghosts): a copy then sends only changes.
+    std::shared_ptr<detail::sent_ghost_values> sent;
+    bool receivers_hold_sent = false;
   };
   using field_key = std::pair<std::uint64_t, std::size_t>;  // (topology instance, field id)
 

@@ -1,5 +1,6 @@
 // Internals of the executor: the start of one ghost copy of several fields of a topology, one
-// message per peer (all fields packed together, unpacked per field when the messages arrive),
+// message per peer (all fields packed together, each as the values that changed since its last
+// copy to that peer, unpacked per field when the messages arrive),
 // and of one ghost reduction (the copy's messages in reverse: each peer's ghost block goes back
 // to its owner, which combines it into the owned values).
 #pragma once
@@ -9,16 +10,33 @@
 #include "flecsi_lite/execution/executor.hh"
 #include "flecsi_lite/execution/launch.hh"
 
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <vector>
 
 namespace flecsi_lite::execution::detail {
 
+/// What a field's ghost copies last sent to each peer (packed in the plan's send order), so
+/// that the next copy sends only the values that changed.
+struct sent_ghost_values {
+  std::uint64_t layout_version = ~std::uint64_t(0);
+  const data::field_storage_base* storage = nullptr;
+  std::vector<std::vector<std::byte>> per_peer;  // by the plan's peer index
+};
+
+/// A field of a copy: its storage, what its copies sent, and whether the peers' ghosts still
+/// hold that (decided when the copy was recorded: no launch wrote the ghosts since the last copy).
+struct copied_field {
+  data::field_storage_base* storage;
+  std::shared_ptr<sent_ghost_values> sent;
+  bool receivers_hold_sent;
+};
+
 /// The launch's start: packs and posts, counting messages and bytes in `traffic`; sets the
 /// launch's finish (unpack).
-std::function<void(launch&)> ghost_copy_start(data::topology_base* topology,
-                                              std::vector<data::field_storage_base*> storages, int tag,
+std::function<void(launch&)> ghost_copy_start(data::topology_base* topology, std::vector<copied_field> fields, int tag,
                                               ghost_traffic* traffic);
 
 /// The start of a ghost reduction of `storage`: sends each peer the ghost block it fills and
