@@ -284,9 +284,21 @@ void search_active_neighbours(
   typename tracked_neighbourhood<D>::template accessor<flecsi_lite::wo> out, double support, tree::domain<D> space,
   tree::shift_storage storage, std::int64_t next, ro<std::int64_t> step_end) {
   std::vector<std::uint8_t> active(step_end.size());
-  flecsi_lite::forall(
-    active.size(), [&](std::size_t a) { active[a] = step_end(a) == next; }, "sph::search_active_neighbours::mask");
-  local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, search_groups, storage);
+  std::size_t targets = 0;
+  flecsi_lite::forall_reduce(
+    active.size(),
+    [&](std::size_t a, std::size_t& count) {
+      active[a] = step_end(a) == next;
+      count += active[a];
+    },
+    Kokkos::Sum<std::size_t>(targets), "sph::search_active_neighbours::mask");
+  // The rows of a few targets (at most a sixteenth of the particles) stay packed, 4 bytes an
+  // entry: coding them as runs and decoding them in every pair loop cost 5% of an individual-step
+  // run, for at most 25 bytes a particle, far below the all-active steps' runs (122). The
+  // entries, hence every sum, are the same (docs/performance.md).
+  const bool few = 16 * targets < active.size();
+  const auto rows = storage == tree::shift_storage::runs && few ? tree::shift_storage::packed : storage;
+  local->find_neighbours_of(active, tree::interaction::symmetric, support, space, out->lists, search_groups, rows);
   detail::finish_search(*local, *out, support, support, space, active.data());
 }
 

@@ -1,9 +1,10 @@
 // Tests of the list layouts of the group walk (list_layout): shift codes packed into the entries
 // carry the same neighbours and shifts as separate ones, on periodic and open domains; rows
 // coded as runs decode to the packed entries, bit for bit, and any row survives its coding; renamed
-// rows and entries (the local tree's storage order) are the default lists, renamed; and a
+// rows and entries (the local tree's storage order) are the default lists, renamed; a
 // repeated search writes the lists in place, with little spare room, walking twice only when
-// the lists outgrow the room of the last ones.
+// the lists outgrow the room of the last ones; and one walk's searches may alternate rows as
+// runs and packed rows.
 #include "flecsi_lite/topology/ntree/search/group_walk.hh"
 #include "tests/flecsi_lite/topology/ntree/search_checks.hh"
 
@@ -221,4 +222,50 @@ TEST_CASE("repeated searches write the lists in place", "[ntree][list_layout]") 
   REQUIRE(coding.repeated_list_passes() == 2);
   REQUIRE(decoded(coded).neighbours == packed_of(grown_tree));
   REQUIRE(coded.runs.capacity() <= coded.runs.size() + coded.runs.size() / 8);
+}
+
+TEST_CASE("one walk's searches may change the kind of their rows", "[ntree][list_layout]") {
+  // As the SPH steps with individual time steps do: every particle's rows as runs, then a few
+  // targets' rows packed, and so on, on one walk (whose mask the caller rewrites).
+  auto set = uniform<3>(2000, 94, 80);
+  sort_by_key(set, nt::curve::hilbert);
+  const auto tree = build_tree(set, 16);
+  const auto space = unit_box(true);
+  const auto few = random_targets(set.size(), 16);
+  const std::vector<std::uint8_t> all(set.size(), 1);
+  const auto fresh_packed = [&](const std::vector<std::uint8_t>& targets) {
+    nt::list_layout layout;
+    layout.shifts = nt::shift_storage::packed;
+    nt::neighbour_lists lists;
+    nt::group_walk<3>({nt::interaction::symmetric, 2.0, targets.data()}).find_neighbours(tree, space, lists, layout);
+    return lists;
+  };
+  const auto expected_all = fresh_packed(all), expected_few = fresh_packed(few);
+  std::vector<std::uint8_t> mask(set.size());
+  nt::group_walk<3> walk({nt::interaction::symmetric, 2.0, mask.data()});
+  nt::neighbour_lists lists;
+  std::size_t passes_after_first_round = 0;
+  for (int round = 0; round < 3; ++round) {
+    for (const bool every : {true, false}) {
+      nt::list_layout layout;
+      layout.shifts = every ? nt::shift_storage::runs : nt::shift_storage::packed;
+      std::copy((every ? all : few).begin(), (every ? all : few).end(), mask.begin());
+      walk.find_neighbours(tree, space, lists, layout);
+      if (every) {
+        REQUIRE(lists.neighbours.capacity() == 0);  // the packed rows' array is freed
+        const auto rows = decoded(lists);
+        REQUIRE(rows.offsets == expected_all.offsets);
+        REQUIRE(rows.neighbours == expected_all.neighbours);
+      } else {
+        REQUIRE(lists.runs.capacity() == 0);
+        REQUIRE(lists.offsets == expected_few.offsets);
+        REQUIRE(lists.neighbours == expected_few.neighbours);
+      }
+    }
+    if (round == 0) passes_after_first_round = walk.repeated_list_passes();
+  }
+  // Each kind keeps the room of its own regions (bytes of runs, entries): after the first search
+  // of each, no search walks twice.
+  REQUIRE(passes_after_first_round == 2);
+  REQUIRE(walk.repeated_list_passes() == passes_after_first_round);
 }

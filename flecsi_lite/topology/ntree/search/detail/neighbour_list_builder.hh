@@ -4,6 +4,7 @@
 #pragma once
 
 #include "flecsi_lite/execution/forall.hh"
+#include "flecsi_lite/runtime/job_memory.hh"
 #include "flecsi_lite/topology/ntree/periodic.hh"
 #include "flecsi_lite/topology/ntree/search/neighbour_lists.hh"
 
@@ -151,15 +152,23 @@ class neighbour_list_builder {
   void start(std::size_t rows, std::size_t chunk_count, neighbour_lists& out, entries kind) {
     out.offsets.assign(rows + 1, 0);
     if (chunks_.size() < chunk_count) chunks_.resize(chunk_count);
-    if (room_.size() < chunk_count) room_.resize(chunk_count, 0);
+    std::vector<std::size_t>& room = room_of(kind);
+    if (room.size() < chunk_count) room.resize(chunk_count, 0);
     chunk_count_ = chunk_count;
     std::vector<std::size_t> region(chunk_count + 1, 0);
     for (std::size_t c = 0; c < chunk_count; ++c)
-      region[c + 1] = region[c] + room_[c] + room_[c] / 16 + (room_[c] ? 64 : 0);
+      region[c + 1] = region[c] + room[c] + room[c] / 16 + (room[c] ? 64 : 0);
     const bool with_shifts = kind == entries::separate_shifts, in_runs = kind == entries::runs;
-    fit(out.neighbours, in_runs ? 0 : region[chunk_count]);
+    // The array this kind does not use is freed first: a search may change kinds. Packed rows of
+    // a few targets, freed before rows of every target are coded as runs, go back to the system:
+    // left in the heap they would add to the peak of the search with the longest lists.
+    if (in_runs && out.neighbours.capacity()) {
+      fit(out.neighbours, 0);
+      runtime::return_free_memory();
+    }
     fit(out.shifts, with_shifts ? region[chunk_count] : 0);
     fit(out.runs, in_runs ? region[chunk_count] : 0);
+    if (!in_runs) fit(out.neighbours, region[chunk_count]);
     out.in_runs = in_runs;
     out.run_entries = 0;
     for (std::size_t c = 0; c < chunk_count; ++c) {
@@ -177,9 +186,10 @@ class neighbour_list_builder {
   /// caller runs the search again from start(), which sizes the regions for this pass's counts.
   [[nodiscard]] bool finish(neighbour_lists& out, entries kind) {
     bool all_in_regions = true;
+    std::vector<std::size_t>& room = room_of(kind);
     for (std::size_t c = 0; c < chunk_count_; ++c) {
       chunks_[c].close();
-      room_[c] = std::max(chunks_[c].size_, room_[c] - room_[c] / 16);
+      room[c] = std::max(chunks_[c].size_, room[c] - room[c] / 16);
       all_in_regions = all_in_regions && !chunks_[c].overflowed_;
     }
     if (!all_in_regions) {
@@ -233,7 +243,11 @@ class neighbour_list_builder {
   // Per chunk, the entries its region is made for: the largest of the recent searches, forgotten
   // by 1/16 a search, so that searches of varying targets (individual time steps: a few active
   // particles, then all) rarely walk twice.
-  std::vector<std::size_t> room_;
+  // In the unit of the lists' kind: bytes of runs, or entries. A search may keep its rows as runs
+  // and the next one packed (sph: the active particles' searches of few targets), so each kind
+  // has its own.
+  std::vector<std::size_t> room_, room_in_runs_;
+  std::vector<std::size_t>& room_of(entries kind) { return kind == entries::runs ? room_in_runs_ : room_; }
   std::size_t chunk_count_ = 0;
   std::size_t repeated_passes_ = 0;
 };
