@@ -236,11 +236,22 @@ auto reduce(Args&&... args) {
 /// Every rank's executor finishes all launches (fields may then be read directly).
 inline void wait_all() { execution::executor::instance().wait_all(); }
 
-/// A field's values after every pending launch is done: for inspection, I/O and tests.
+/// A field's values after every pending launch is done: for inspection, I/O and tests. The
+/// view may write the ghosts, so the field's next ghost copy sends every value.
 template<class T, class Topo>
 auto host_view(const field_reference<T, Topo>& ref) {
-  wait_all();
+  auto& ex = execution::executor::instance();
+  ex.wait_all();
+  ex.forget_sent_values(ref.topology().instance_id(), ref.id());
   return typename data::field_storage<T>::view_type(ref.storage().view());
+}
+
+/// The same, read only: the ghosts keep what the last copy delivered, and the next copy sends
+/// only the values that changed.
+template<class T, class Topo>
+auto host_read(const field_reference<T, Topo>& ref) {
+  wait_all();
+  return Kokkos::View<const T*, memory_space>(ref.storage().view());
 }
 
 }  // namespace flecsi_lite

@@ -428,6 +428,11 @@ void executor::wait_all() {
   std::rethrow_exception(error);
 }
 
+void executor::forget_sent_values(std::uint64_t instance, std::size_t field) {
+  const auto state = fields_.find({instance, field});
+  if (state != fields_.end()) state->second.receivers_hold_sent = false;
+}
+
 void executor::before_layout_change(std::uint64_t) { wait_all(); }
 
 void executor::after_layout_change(std::uint64_t topology_id) {

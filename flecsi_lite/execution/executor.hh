@@ -83,6 +83,9 @@ class executor final : public data::layout_listener {
   void wait(const launch& target);
   /// Runs every recorded launch; rethrows the first failure nobody has seen through a future.
   void wait_all();
+  /// The field's ghosts may have been written outside tasks (host_view): its next ghost copy
+  /// sends every value, not only those that changed since the last one.
+  void forget_sent_values(std::uint64_t instance, std::size_t field);
   /// Between chunks of long loops inside a task: completes communication whose requests are done
   /// and posts copies that became ready. True while some communication is in flight.
   bool poll();

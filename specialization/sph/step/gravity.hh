@@ -87,7 +87,7 @@ gravity_record walk_gravity(simulation<D>& s, const tree::gravity_tree<D>& gravi
 template<int D>
 std::vector<std::uint8_t> active_particles(simulation<D>& s) {
   if (!s.physics.individual_time_steps() || s.initializing) return {};
-  const auto step_end = flecsi_lite::host_view(fields<D>::step_end(*s.particles));
+  const auto step_end = flecsi_lite::host_read(fields<D>::step_end(*s.particles));
   std::vector<std::uint8_t> active(s.particles->owned_size());
   for (std::size_t a = 0; a < active.size(); ++a) active[a] = step_end(a) == s.clock.next;
   return active;
@@ -121,18 +121,18 @@ gravity_record update_gravity(simulation<D>& s) {
     const auto& settings = s.physics.gravity;
     flecsi_lite::timers::scoped timer("sph::gravity");
     const std::size_t n = p.owned_size();
-    // The fields as the last launches left them (host_view waits for them).
-    const auto keys = flecsi_lite::host_view(particle_tree<D>::key(p));
-    const auto x = flecsi_lite::host_view(f::position()(p));
-    const auto m = flecsi_lite::host_view(f::mass()(p));
-    const auto h = flecsi_lite::host_view(f::smoothing_length()(p));
+    // The fields as the last launches left them (host_read waits for them).
+    const auto keys = flecsi_lite::host_read(particle_tree<D>::key(p));
+    const auto x = flecsi_lite::host_read(f::position()(p));
+    const auto m = flecsi_lite::host_read(f::mass()(p));
+    const auto h = flecsi_lite::host_read(f::smoothing_length()(p));
     tree::gravity_options options;
     options.theta = settings.theta;
     options.relative_criterion = settings.criterion == gravity_criterion::relative;
     options.relative_tolerance = settings.relative_tolerance;
     std::vector<double> previous;  // |a_old| / G: the tree's units (G = 1)
     if (options.relative_criterion) {
-      const auto a_old = flecsi_lite::host_view(f::acceleration(p));
+      const auto a_old = flecsi_lite::host_read(f::acceleration(p));
       previous.resize(n);
       for (std::size_t a = 0; a < n; ++a) {
         double a2 = 0;

@@ -179,4 +179,13 @@ TEST_CASE("a ghost copy sends only the values that changed since the field's las
           execute<shift_every_seventh>(n, u(n), 0.0);
           CHECK(all_ranks(execute<ghosts_hold_shifted>(n, u(n), 0.5).get()));
         }) == neighbours * (mask + halo * sizeof(double)));
+  // The same after ghosts written outside tasks (host_view).
+  {
+    auto values = host_view(u(n));
+    for (std::size_t i = owned; i < values.extent(0); ++i) values(i) = -2;
+  }
+  CHECK(bytes_of([&] {
+          execute<shift_every_seventh>(n, u(n), 0.0);
+          CHECK(all_ranks(execute<ghosts_hold_shifted>(n, u(n), 0.5).get()));
+        }) == neighbours * (mask + halo * sizeof(double)));
 }
