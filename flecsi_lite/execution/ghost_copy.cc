@@ -44,9 +44,7 @@ void post_exchange(launch& self, int peer, message& send, message& receive, int 
   traffic.bytes_sent += send.size();
   ++traffic.messages_received;
 }
-}  // namespace
 
-namespace {
 // The bytes of one field's part of a message to or from a peer of `count` entities: its mask,
 // then at most every value.
 std::size_t mask_bytes(std::size_t count) { return (count + 7) / 8; }
@@ -55,12 +53,12 @@ std::size_t largest_part(const copied_field& f, std::size_t count) {
 }
 
 // Whether the values `f` sent to peer `p` in its last copy are still what that peer's ghosts
-// hold: no task wrote them since (record order, the same on every rank), the same layout and
-// storage.
-bool receivers_hold_sent(const copied_field& f, const data::topology_base& topology, std::size_t p, std::size_t count) {
+// hold: no launch wrote them since (record order, the same on every rank) and there was a last
+// copy (the executor starts a field's record afresh at every layout change).
+bool receivers_hold_sent(const copied_field& f, std::size_t p, std::size_t count) {
   const sent_ghost_values& sent = *f.sent;
-  return f.receivers_hold_sent && sent.layout_version == topology.layout_version() && sent.storage == f.storage &&
-         p < sent.per_peer.size() && sent.per_peer[p].size() == count * f.storage->element_size();
+  return f.receivers_hold_sent && p < sent.per_peer.size() &&
+         sent.per_peer[p].size() == count * f.storage->element_size();
 }
 }  // namespace
 
@@ -96,7 +94,7 @@ std::function<void(launch&)> ghost_copy_start(data::topology_base* topology, std
       std::byte* out = send.data();
       for (const auto& f : fields) {
         auto& sent = *f.sent;
-        const bool compare = receivers_hold_sent(f, *topology, p, peer.send.size());
+        const bool compare = receivers_hold_sent(f, p, peer.send.size());
         if (sent.per_peer.size() != peers.size()) sent.per_peer.resize(peers.size());
         sent.per_peer[p].resize(peer.send.size() * f.storage->element_size());
         auto* mask = reinterpret_cast<std::uint8_t*>(out);
@@ -107,10 +105,6 @@ std::function<void(launch&)> ghost_copy_start(data::topology_base* topology, std
       auto& receive = (*receive_buffers)[p];
       receive.resize(largest_received);
       post_exchange(self, peer.rank, send, receive, tag, *traffic);
-    }
-    for (const auto& f : fields) {
-      f.sent->layout_version = topology->layout_version();
-      f.sent->storage = f.storage;
     }
     self.finish = [topology, storages, receive_buffers, send_buffers, me, traffic] {
       const auto& finished_peers = topology->plan().peers;

@@ -10,7 +10,6 @@
 #include "flecsi_lite/execution/executor.hh"
 #include "flecsi_lite/execution/launch.hh"
 
-#include <cstdint>
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -19,10 +18,8 @@
 namespace flecsi_lite::execution::detail {
 
 /// What a field's ghost copies last sent to each peer (packed in the plan's send order), so
-/// that the next copy sends only the values that changed.
+/// that the next copy sends only the values that changed; made anew at every layout change.
 struct sent_ghost_values {
-  std::uint64_t layout_version = ~std::uint64_t(0);
-  const data::field_storage_base* storage = nullptr;
   std::vector<std::vector<std::byte>> per_peer;  // by the plan's peer index
 };
 

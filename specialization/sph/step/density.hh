@@ -248,8 +248,8 @@ double density_loop(const neighbourhood<D>& neighbours, const physics_settings& 
 /// needs no ghost value, and once with Ghost = ro for the boundary ones. Of a neighbour b the sums
 /// read x_b and m_b only (and v_b for the gradients); h, kind and the outputs are the target's
 /// own. With `divergence` present, also div v (and |curl v| with `curl` present: the Balsara
-/// switch) at the final h; v, divergence and curl are absent fields where nobody reads them. Wall particles keep their
-/// h. Returns the largest of `earlier` (the value of the other part's launch) and h_a / h_limit_a
+/// switch) at the final h; v, divergence and curl are absent fields where nobody reads them.
+/// Wall particles keep their h. Returns the largest of `earlier` (the value of the other part's launch) and h_a / h_limit_a
 /// over this part's targets, where h_limit_a = reach/2 * (h_a at entry) is the largest h for
 /// which a's list is complete: above 1, h grew out of the searched reach (h is then the grown
 /// value, rho is not final) and the caller must search again and call this task again.

@@ -10,14 +10,6 @@
 
 namespace flecsph::sph {
 
-/// Launches `interior` then `boundary` (the same task with Ghost = na and Ghost = ro) with the
-/// same arguments (passed on as the lvalues they are: each launch takes its own copies).
-template<auto interior, auto boundary, class... Arguments>
-void execute_interior_then_boundary(Arguments&... arguments) {
-  flecsi_lite::execute<interior>(arguments...);
-  flecsi_lite::execute<boundary>(arguments...);
-}
-
 /// Launches `interior` with `start` as its initial value, then reduces with Reduction over the
 /// ranks `boundary`, which starts from the interior launch's value: the future of the whole.
 /// Both tasks take (neighbours, settings, initial value, fields...).

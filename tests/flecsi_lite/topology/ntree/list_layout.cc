@@ -46,6 +46,16 @@ nt::neighbour_lists decoded(const nt::neighbour_lists& coded) {
   return lists;
 }
 
+// The packed lists of a fresh walk with `options` (the reference of the searches under test).
+nt::neighbour_lists packed_lists(const nt::hashed_tree<3>& tree, const nt::domain<3>& space,
+                                 const nt::search_options& options) {
+  nt::list_layout layout;
+  layout.shifts = nt::shift_storage::packed;
+  nt::neighbour_lists lists;
+  nt::group_walk<3>(options).find_neighbours(tree, space, lists, layout);
+  return lists;
+}
+
 nt::domain<3> unit_box(bool periodic) {
   nt::domain<3> space = nt::domain<3>::open();
   space.periodic.fill(periodic);
@@ -205,22 +215,15 @@ TEST_CASE("repeated searches write the lists in place", "[ntree][list_layout]") 
   // The same with rows coded as runs: regions in bytes, a second pass when they are outgrown.
   nt::list_layout layout;
   layout.shifts = nt::shift_storage::runs;
-  const auto packed_of = [&](const auto& t) {
-    nt::list_layout plain;
-    plain.shifts = nt::shift_storage::packed;
-    nt::neighbour_lists packed;
-    nt::group_walk<3>(options).find_neighbours(t, space, packed, plain);
-    return packed.neighbours;
-  };
   nt::group_walk<3> coding(options);
   nt::neighbour_lists coded;
   coding.find_neighbours(tree, space, coded, layout);
   coding.find_neighbours(tree, space, coded, layout);
   REQUIRE(coding.repeated_list_passes() == 1);
-  REQUIRE(decoded(coded).neighbours == packed_of(tree));
+  REQUIRE(decoded(coded).neighbours == packed_lists(tree, space, options).neighbours);
   coding.find_neighbours(grown_tree, space, coded, layout);
   REQUIRE(coding.repeated_list_passes() == 2);
-  REQUIRE(decoded(coded).neighbours == packed_of(grown_tree));
+  REQUIRE(decoded(coded).neighbours == packed_lists(grown_tree, space, options).neighbours);
   REQUIRE(coded.runs.capacity() <= coded.runs.size() + coded.runs.size() / 8);
 }
 
@@ -233,14 +236,8 @@ TEST_CASE("one walk's searches may change the kind of their rows", "[ntree][list
   const auto space = unit_box(true);
   const auto few = random_targets(set.size(), 16);
   const std::vector<std::uint8_t> all(set.size(), 1);
-  const auto fresh_packed = [&](const std::vector<std::uint8_t>& targets) {
-    nt::list_layout layout;
-    layout.shifts = nt::shift_storage::packed;
-    nt::neighbour_lists lists;
-    nt::group_walk<3>({nt::interaction::symmetric, 2.0, targets.data()}).find_neighbours(tree, space, lists, layout);
-    return lists;
-  };
-  const auto expected_all = fresh_packed(all), expected_few = fresh_packed(few);
+  const auto expected_all = packed_lists(tree, space, {nt::interaction::symmetric, 2.0, all.data()});
+  const auto expected_few = packed_lists(tree, space, {nt::interaction::symmetric, 2.0, few.data()});
   std::vector<std::uint8_t> mask(set.size());
   nt::group_walk<3> walk({nt::interaction::symmetric, 2.0, mask.data()});
   nt::neighbour_lists lists;
